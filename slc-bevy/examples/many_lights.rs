@@ -24,16 +24,17 @@
 //! pixel instead of once per tile (`SlcCamera::walk`; the bench too);
 //! `SLC_BEVY_RAY_QUERY=1` casts slc's shadow rays as hardware ray queries
 //! where the device has them (`SlcCamera::ray_query`; the bench too);
-//! `SLC_BEVY_VISIBILITY=1` turns on the reuse's visibility reuse
-//! (`SlcCamera::visibility_reuse`; the bench too).
+//! `SLC_BEVY_VISIBILITY=0` turns off the reuse's visibility reuse
+//! (`SlcCamera::visibility_reuse`, on by default; the bench's default rows
+//! too).
 //!
 //! **Frame-time bench** (no window, no display): `SLC_BEVY_BENCH=out.json`
 //! renders into an image target at `SLC_BEVY_SIZE` (default 1920x1080)
 //! under Bevy's `RenderDiagnosticsPlugin` (GPU timestamps where the adapter
-//! has them), in six configurations: slc shadowed (resampled picks reused
-//! across frames, its default; without reuse; weighted picks), slc
-//! unshadowed, Bevy at its default 20 m
-//! ranges, Bevy at unbounded ranges. Each warms up for
+//! has them), in seven configurations: slc shadowed (3 resampled picks with
+//! visibility reuse across frames, its default; 8 picks with plain reuse,
+//! its default until 2026-12-08; without reuse; weighted picks), slc
+//! unshadowed, Bevy at its default 20 m ranges, Bevy at unbounded ranges. Each warms up for
 //! at least 0.5 s and 3 frames, then times `SLC_BEVY_BENCH_FRAMES` frames
 //! (default 64, at most 120) back to back (`SLC_BEVY_BENCH_MODES`, e.g.
 //! `slc` or `slc,default`, limits it to those modes' configurations); it
@@ -145,9 +146,10 @@ fn ray_query() -> bool {
     std::env::var("SLC_BEVY_RAY_QUERY").as_deref() == Ok("1")
 }
 
-/// Whether the reuse is visibility reuse: `SLC_BEVY_VISIBILITY=1`.
+/// Whether the reuse is visibility reuse: yes (`SlcCamera`'s default)
+/// unless `SLC_BEVY_VISIBILITY=0`.
 fn visibility_reuse() -> bool {
-    std::env::var("SLC_BEVY_VISIBILITY").as_deref() == Ok("1")
+    std::env::var("SLC_BEVY_VISIBILITY").as_deref() != Ok("0")
 }
 
 /// How slc finds each pixel's lights: `SLC_BEVY_WALK` (`tile`, the
@@ -433,15 +435,20 @@ fn scripted_exit(
 }
 
 /// One configuration of the bench: its name, the lights' mode, slc's
-/// shadows, whether its picks are resampled (its default) or weighted, and
-/// whether resampled picks are reused across frames (its default).
-const CONFIGS: [(&str, Mode, bool, bool, bool); 6] = [
-    ("slc, shadowed", Mode::Slc, true, true, true),
-    ("slc, shadowed, no reuse", Mode::Slc, true, true, false),
-    ("slc, shadowed, weighted picks", Mode::Slc, true, false, false),
-    ("slc, unshadowed", Mode::Slc, false, true, true),
-    ("Bevy, default 20 m ranges", Mode::BevyDefaultRange, false, true, true),
-    ("Bevy, unbounded ranges", Mode::BevyUnbounded, false, true, true),
+/// shadows, whether its picks are resampled (its default) or weighted,
+/// whether resampled picks are reused across frames (its default), and the
+/// picks and visibility reuse where they are not the run's
+/// ([`SlcCamera`]'s default picks, [`visibility_reuse`]).
+type BenchConfig = (&'static str, Mode, bool, bool, bool, Option<(u32, bool)>);
+
+const CONFIGS: [BenchConfig; 7] = [
+    ("slc, shadowed", Mode::Slc, true, true, true, None),
+    ("slc, shadowed, 8 plain reused", Mode::Slc, true, true, true, Some((8, false))),
+    ("slc, shadowed, no reuse", Mode::Slc, true, true, false, None),
+    ("slc, shadowed, weighted picks", Mode::Slc, true, false, false, None),
+    ("slc, unshadowed", Mode::Slc, false, true, true, None),
+    ("Bevy, default 20 m ranges", Mode::BevyDefaultRange, false, true, true, None),
+    ("Bevy, unbounded ranges", Mode::BevyUnbounded, false, true, true, None),
 ];
 
 /// The median of `v` (slc-scene's, shared with `slc bench`), 0 for none.
@@ -568,13 +575,18 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         if visibility_reuse() { "on" } else { "off" }
     );
     let mut results = Vec::new();
-    for (name, mode, shadows, resample, reuse) in CONFIGS {
+    let run_picks = (SlcCamera::default().picks, visibility_reuse());
+    for (name, mode, shadows, resample, reuse, picks) in CONFIGS {
         if !modes.contains(&mode) {
             continue;
         }
         let mut settings = app.world_mut().resource_mut::<Settings>();
         (settings.mode, settings.apply) = (mode, true);
-        set_cameras(&mut app, |c| (c.shadows, c.resample, c.reuse) = (shadows, resample, reuse));
+        let (k, visibility) = picks.unwrap_or(run_picks);
+        set_cameras(&mut app, |c| {
+            (c.shadows, c.resample, c.reuse) = (shadows, resample, reuse);
+            (c.picks, c.visibility_reuse) = (k, visibility);
+        });
         // Warm-up: the mode applied, pipelines built, the clock up.
         let start = Instant::now();
         let mut n = 0;

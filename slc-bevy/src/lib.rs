@@ -170,7 +170,11 @@ pub struct SlcCamera {
     pub culling: Culling,
     /// Picks per pixel among the lights in range (`1..=64`): at most this
     /// many shadow rays (two or three times as many with
-    /// [`Self::visibility_reuse`]).
+    /// [`Self::visibility_reuse`]). 3 by default: resampled picks draw one
+    /// colour channel each, and with visibility reuse 3 picks cast fewer
+    /// rays than 8 plain reused picks in a still view (5.3 against 7.3 per
+    /// pixel in slc's shadow test) and about as many while the camera
+    /// moves (7.1 against 7.2), at 0.58 of their error still.
     pub picks: u32,
     /// Draw the picks in proportion to each light's unshadowed light at
     /// the pixel, every light in range evaluated without a ray
@@ -183,7 +187,7 @@ pub struct SlcCamera {
     /// `DirectReuse`, ReSTIR DI's temporal reuse, unbiased): each pick is
     /// a reservoir combined with the last frame's at the pixel the point
     /// was seen in, so a still view's picks improve frame after frame. Costs
-    /// `2 × (48 + 12·picks)` bytes per pixel (8 picks at 1080p: 597 MB).
+    /// `2 × (48 + 12·picks)` bytes per pixel (3 picks at 1080p: 348 MB).
     pub reuse: bool,
     /// With [`Self::reuse`], visibility reuse (slc-wgpu's
     /// `DirectReuse::visibility`, ReSTIR DI's): each frame's picks are
@@ -197,7 +201,9 @@ pub struct SlcCamera {
     /// its light moved (did it reach the last frame's surface?). Unbiased
     /// where the camera, the lights and the meshes move too: a moving
     /// mesh costs the pixels whose rays cross the box it moved in their
-    /// history, not their mean. Off by default until a GPU has timed it.
+    /// history, not their mean. On by default (with 3 picks: issue 47's
+    /// noise target at fewer rays than the 8 plain reused picks it
+    /// replaced; docs/results/reused-picks.md); its GPU time is pending.
     pub visibility_reuse: bool,
     /// Seed of the random ranges and picks (the frame number varies them
     /// every frame).
@@ -240,16 +246,16 @@ pub struct SlcCamera {
 }
 
 impl Default for SlcCamera {
-    /// On, ε = 0.01, 8 resampled picks reused across frames, seed 1,
-    /// accumulated over up to 32 frames, shadowed.
+    /// On, ε = 0.01, 3 resampled picks with visibility reuse across
+    /// frames, seed 1, accumulated over up to 32 frames, shadowed.
     fn default() -> Self {
         SlcCamera {
             enabled: true,
             culling: Culling::stochastic(0.01, 1.0).expect("a valid default"),
-            picks: 8,
+            picks: 3,
             resample: true,
             reuse: true,
-            visibility_reuse: false,
+            visibility_reuse: true,
             seed: 1,
             accumulate: true,
             max_history: 32.0,

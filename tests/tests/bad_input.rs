@@ -700,7 +700,7 @@ mod engine_misuse {
     /// come out finite.
     pub fn direct_reuse_settings() {
         let Some(gpu) = slc_tests::gpu() else { return };
-        let reuse = DirectReuse::default();
+        let reuse = DirectReuse { visibility: false, ..DirectReuse::default() };
         let resampled = DirectSelection::Resampled { k: 4 };
         let desc =
             |selection, reuse| DirectPassDesc { selection, reuse: Some(reuse), ..f32_desc() };

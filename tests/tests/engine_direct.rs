@@ -472,7 +472,7 @@ fn engine_program_matches_brute_force() {
     // buffer's view-projection): the 8th frame of still lights (layout 0,
     // a new ξ every frame).
     let reuse_desc = DirectPassDesc {
-        reuse: Some(DirectReuse::default()),
+        reuse: Some(DirectReuse { visibility: false, ..DirectReuse::default() }),
         ..desc(DirectSelection::Resampled { k: 8 })
     };
     let mut reused = DirectPass::new(&gpu, &set, &reuse_desc).unwrap();
@@ -726,7 +726,7 @@ fn shadowed_reuse_is_a_quarter_of_weighted_noise() {
     };
     let (weighted_img, weighted_rays) =
         frames(&mut pass(DirectSelection::Weighted { k: 8 }, None), 1);
-    let visibility = Some(DirectReuse { visibility: true, ..DirectReuse::default() });
+    let visibility = Some(DirectReuse::default());
     let (reused_img, reused_rays) =
         frames(&mut pass(DirectSelection::Resampled { k: 4 }, visibility), 32);
     let ((sw, cw), (sr, cr)) = (errors(&weighted_img), errors(&reused_img));

@@ -476,7 +476,7 @@ fn shadowed_direct_pass_fits_webgpu_default_limits() {
     // buffers, 8 in all for point lights (irradiance, no IES table)...
     let reused = DirectPassDesc {
         selection: DirectSelection::Resampled { k: 4 },
-        reuse: Some(DirectReuse { visibility: true, ..DirectReuse::default() }),
+        reuse: Some(DirectReuse::default()),
         light_types: LightTypes { point: true, ..LightTypes::default() },
         ..desc
     };

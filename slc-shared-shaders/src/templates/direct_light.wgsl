@@ -159,8 +159,9 @@ fn output_of(s: Shaded) -> vec3f {
 // frame's candidates are combined with the slots of previous-frame pixels
 // (the reprojected one and DOMAINS − 1 around it) under the
 // generalized balance heuristic: a pick's share is its domain's confidence
-// times its target at that domain's surface (previous lights), over the
-// sum for every domain. Every target is the pick's whole unshadowed
+// (times slc-core's `reuse_trust` in the pick: less where that surface is
+// not this one, the more so the nearer the pick's light) times its target at that domain's surface (previous
+// lights), over the sum for every domain. Every target is the pick's whole unshadowed
 // contribution (no range, no roulette), so each domain can draw every
 // light: the combination is unbiased, and the culling's noise averages
 // over the reused frames.
@@ -372,10 +373,13 @@ fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached: 
         }
         var own = cur_c * here;
         var all = own;
+        // The sample's light, for each domain's trust in it.
+        let y = light_point(lights[s.light], grid_coordinate(s.u), grid_coordinate(s.u << 16u));
         for (var k = k0; k < k1; k++) {
             var t = 0.0;
             if j > k0 || cur_reached {
-                t = (*doms)[k].c * reuse_target(q, lights_prev[s.light], s.u, (*doms)[k].x, (*doms)[k].n, (*doms)[k].m);
+                let d = (*doms)[k];
+                t = d.c * reuse_trust(y - x, y - d.x) * reuse_target(q, lights_prev[s.light], s.u, d.x, d.n, d.m);
             }
             all += t;
             if k + 1u == j {

@@ -195,6 +195,7 @@ const BSH_TAIL: u32 = 2147483648u;
 const BSH_TAIL_BINS: u32 = 1024u;
 const BSH_TAIL_MAX: u32 = 64u;
 const RESERVOIR_FULL: u32 = 4294967295u;
+const REUSE_TRUST_SCALE: f32 = 64f;
 const GGX_ALPHA_MIN: f32 = 0.001f;
 const RANGE_SCALE_MAX: f32 = 64f;
 const LIGHT_BVH_LEAF: u32 = 4294967295u;
@@ -470,6 +471,15 @@ fn gris_weight(own: f32, all_: f32, p_hat: f32, w_5: f32) -> f32 {
     return (((own / all_) * p_hat) * w_5);
 }
 
+fn reuse_trust(h_1: vec3<f32>, t_1: vec3<f32>) -> f32 {
+    let d2_7 = dot(h_1, h_1);
+    if !((d2_7 > 0f)) {
+        return 1f;
+    }
+    let c_11 = (h_1 - t_1);
+    return (d2_7 / (d2_7 + (REUSE_TRUST_SCALE * dot(c_11, c_11))));
+}
+
 fn gris_contribution_weight(w_sum_2: f32, p_hat_1: f32) -> f32 {
     if !((p_hat_1 > 0f)) {
         return 0f;
@@ -482,8 +492,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t_5 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_5 * t_5));
+    let t_6 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_6 * t_6));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -509,9 +519,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_11 = saturate((1f - v_h));
-    let c2_1 = (c_11 * c_11);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_11)));
+    let c_12 = saturate((1f - v_h));
+    let c2_1 = (c_12 * c_12);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_12)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -618,9 +628,9 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_5: f32, reflectance_1: f32, n
     }
     let _e15 = bevy_alpha(r_5);
     let n_v_3 = max(dot(n_4, v_1), 0.0001f);
-    let h_3 = normalize((l + v_1));
-    let n_h = saturate(dot(n_4, h_3));
-    let l_h = saturate(dot(l, h_3));
+    let h_4 = normalize((l + v_1));
+    let n_h = saturate(dot(n_4, h_4));
+    let l_h = saturate(dot(l, h_4));
     let f90_d_3 = (0.5f + (((2f * _e15) * l_h) * l_h));
     let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_l_1);
     let _e41 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_v_3);
@@ -658,8 +668,8 @@ fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_12 = cross(v_2, d);
-    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_12, c_12)) * a_3)) / d2_4), 1f);
+    let c_13 = cross(v_2, d);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_13, c_13)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -669,8 +679,8 @@ fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>)
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_6 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1f, (rl.w * rl.w));
+    let t_7 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_7 * t_7))), 1f, (rl.w * rl.w));
 }
 
 fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_6: vec3<f32>) -> f32 {
@@ -762,15 +772,15 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_7 = (dot(e2_, q_10) * inv);
-    if (t_7 > t_min) {
-        local_27 = (t_7 < t_max_1);
+    let t_8 = (dot(e2_, q_10) * inv);
+    if (t_8 > t_min) {
+        local_27 = (t_8 < t_max_1);
     } else {
         local_27 = false;
     }
     let _e51 = local_27;
     if _e51 {
-        return t_7;
+        return t_8;
     }
     return -1f;
 }
@@ -851,9 +861,9 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i;
-                        let t_8 = geo_tris[_e42];
+                        let t_9 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_5, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_5, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -948,9 +958,9 @@ fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     let v_10 = (x_4 - node_4.center);
-    let d2_7 = dot(v_10, v_10);
+    let d2_8 = dot(v_10, v_10);
     let _e29 = bsh_reach_bound(node_4, rl_3.w);
-    if (d2_7 > (_e29 * _e29)) {
+    if (d2_8 > (_e29 * _e29)) {
         return false;
     }
     if (node_4.child == BSH_NONE) {
@@ -959,12 +969,12 @@ fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
         let _e42 = sphere_contains_point(node_4.center, _e41, x_4);
         return _e42;
     }
-    let _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_8, rl_3);
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_8, r_8, rl_3);
     let s_c = (_e45 * 1.001f);
     let _e50 = bsh_range_bound(node_4);
     let reach = (node_4.extent + (sqrt(s_c) * _e50));
-    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_30 = (d2_7 <= (reach * reach));
+    if (d2_8 <= ((node_4.radius * node_4.radius) * s_c)) {
+        local_30 = (d2_8 <= (reach * reach));
     } else {
         local_30 = false;
     }
@@ -1055,11 +1065,11 @@ fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1
     return end;
 }
 
-fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
-    let _e2 = (*h_1);
+fn next_threshold(sum: f32, h_2: ptr<function, u32>) -> f32 {
+    let _e2 = (*h_2);
     let _e3 = pcg_hash(_e2);
-    (*h_1) = _e3;
-    let _e4 = (*h_1);
+    (*h_2) = _e3;
+    let _e4 = (*h_2);
     let _e5 = xi_from_bits(_e4);
     let _e6 = weighted_threshold(sum, _e5);
     return _e6;
@@ -1097,10 +1107,10 @@ fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>
     }
     let _e41 = c_8.y;
     let v_11 = (x_5 - _e41);
-    let d2_8 = dot(v_11, v_11);
-    let _e48 = light_intensity(l_3, (v_11 / vec3(sqrt(d2_8))));
+    let d2_9 = dot(v_11, v_11);
+    let _e48 = light_intensity(l_3, (v_11 / vec3(sqrt(d2_9))));
     let _e50 = c_8.cos_x;
-    let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    let _e51 = connection_factor(_e50, d2_9, rt2_2, w_res);
     c_8.e = (_e48 * _e51);
     let _e53 = c_8;
     return _e53;
@@ -1115,8 +1125,8 @@ fn connect_traced(li: u32, x_6: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_2:
 }
 
 fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_9: vec3<f32>, rl_4: vec4<f32>) -> f32 {
-    let c_13 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_4, c_13.center, c_13.radius, x_7, r_9);
+    let c_14 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_4, c_14.center, c_14.radius, x_7, r_9);
     return _e9;
 }
 
@@ -1179,7 +1189,7 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
     return (b_6.lo.x > b_6.hi.x);
 }
 
-fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
+fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_6: u32;
     var b_7: u32;
     var local_34: bool;
@@ -1192,7 +1202,7 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
     }
     let end_1 = bsh_nodes[_e8].next;
     p_6 = at;
-    let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w);
     b_7 = _e21;
     loop {
         let _e23 = b_7;
@@ -1232,7 +1242,7 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         continuing {
             let _e53 = b_7;
             let _e56 = bsh_nodes[_e53].next;
-            let _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            let _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_2.lo, t_2.hi, t_2.w);
             b_7 = _e60;
         }
     }
@@ -1242,7 +1252,7 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 
 fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk {
     var local_37: bool;
-    var t_2: TileWalk;
+    var t_3: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
@@ -1256,10 +1266,10 @@ fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_9), _e12));
     let _e15 = workgroup_box(li_4, x_8, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
-    t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
+    t_3 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
     let _e24 = box_is_empty(_e15);
     if _e24 {
-        let _e25 = t_2;
+        let _e25 = t_3;
         return _e25;
     }
     s_4 = li_4;
@@ -1272,7 +1282,7 @@ fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk
         {
             let _e31 = s_4;
             let _e33 = s_4;
-            let _e34 = t_2;
+            let _e34 = t_3;
             let _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
             subtree_at[_e31] = _e39;
         }
@@ -1291,12 +1301,12 @@ fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk
             }
             {
                 let _e53 = s_5;
-                let c_14 = subtree_at[_e53];
+                let c_15 = subtree_at[_e53];
                 let _e57 = s_5;
                 let _e59 = sum_1;
                 subtree_at[_e57] = _e59;
                 let _e60 = sum_1;
-                sum_1 = (_e60 + c_14);
+                sum_1 = (_e60 + c_15);
             }
             continuing {
                 let _e63 = s_5;
@@ -1307,17 +1317,17 @@ fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk
         tile_total = _e66;
     }
     let _e69 = workgroupUniformLoad((&tile_total));
-    t_2.total = _e69;
-    let _e70 = t_2;
+    t_3.total = _e69;
+    let _e70 = t_3;
     return _e70;
 }
 
-fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
+fn tile_walk_fill(li_5: u32, t_4: TileWalk, start_3: u32) -> u32 {
     var s_6: u32;
     var past: u32;
     var local_38: bool;
 
-    let to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    let to_1 = min(t_4.total, (start_3 + TILE_LIST));
     s_6 = li_5;
     loop {
         let _e8 = s_6;
@@ -1328,7 +1338,7 @@ fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
         {
             let _e12 = s_6;
             let at_1 = subtree_at[_e12];
-            past = t_3.total;
+            past = t_4.total;
             let _e17 = s_6;
             if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
                 let _e23 = s_6;
@@ -1344,7 +1354,7 @@ fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
             let _e34 = local_38;
             if _e34 {
                 let _e35 = s_6;
-                let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+                let _e37 = tile_subtree(_e35, t_4, true, at_1, start_3, to_1);
             }
         }
         continuing {
@@ -1589,15 +1599,15 @@ fn reached_before(li_9: u32, cells_5: u32, d_8: Domain, x_15: vec3<f32>, n_14: v
         {
             let _e57 = previous_index(d_8.pixel);
             let _e60 = q_7;
-            let h_4 = reuse_pixels[_e57].slots[_e60];
-            if (h_4.w > 0f) {
-                local_45 = (h_4.light < arrayLength((&lights)));
+            let h_5 = reuse_pixels[_e57].slots[_e60];
+            if (h_5.w > 0f) {
+                local_45 = (h_5.light < arrayLength((&lights)));
             } else {
                 local_45 = false;
             }
             let _e73 = local_45;
             if _e73 {
-                let _e78 = sample_key(h_4.light, h_4.u);
+                let _e78 = sample_key(h_5.light, h_5.u);
                 local_46 = all((_e78 == _e49));
             } else {
                 local_46 = false;
@@ -1617,7 +1627,7 @@ fn reached_before(li_9: u32, cells_5: u32, d_8: Domain, x_15: vec3<f32>, n_14: v
     return _e90;
 }
 
-fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_9: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
+fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_9: f32, h_3: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
     var j_5: u32 = 0u;
@@ -1645,7 +1655,7 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_9: f32, h_2: u32, doms_1: p
     if (_e33.z <= 0f) {
         return 0u;
     }
-    hr = h_2;
+    hr = h_3;
     loop {
         let _e41 = j_5;
         if (_e41 < DOMAINS) {
@@ -1672,23 +1682,23 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_9: f32, h_2: u32, doms_1: p
                 p_7 = (_e55 + _e61);
             }
             let _e63 = p_7;
-            let t_9 = vec2<i32>(round(_e63));
-            if !((t_9.x < 0i)) {
-                local_47 = (t_9.y < 0i);
+            let t_10 = vec2<i32>(round(_e63));
+            if !((t_10.x < 0i)) {
+                local_47 = (t_10.y < 0i);
             } else {
                 local_47 = true;
             }
             let _e76 = local_47;
             if !(_e76) {
                 let _e83 = view.width;
-                local_48 = (t_9.x >= i32(_e83));
+                local_48 = (t_10.x >= i32(_e83));
             } else {
                 local_48 = true;
             }
             let _e87 = local_48;
             if !(_e87) {
                 let _e94 = view.height;
-                local_49 = (t_9.y >= i32(_e94));
+                local_49 = (t_10.y >= i32(_e94));
             } else {
                 local_49 = true;
             }
@@ -1697,7 +1707,7 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_9: f32, h_2: u32, doms_1: p
                 continue;
             }
             let _e103 = view.width;
-            let pixel = ((u32(t_9.y) * _e103) + u32(t_9.x));
+            let pixel = ((u32(t_10.y) * _e103) + u32(t_10.x));
             seen_1 = false;
             k_5 = 0u;
             loop {
@@ -1775,7 +1785,7 @@ fn gris_combine(q_8: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached
     var own_1: f32;
     var all_1: f32;
     var k_6: u32;
-    var t_4: f32;
+    var t_5: f32;
     var local_57: bool;
     var local_58: bool;
 
@@ -1852,88 +1862,90 @@ fn gris_combine(q_8: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached
             own_1 = (cur_c * _e87);
             let _e105 = own_1;
             all_1 = _e105;
+            let _e109 = s_11.light;
+            let _e111 = lights[_e109];
+            let _e113 = s_11.u;
+            let _e114 = grid_coordinate(_e113);
+            let _e116 = s_11.u;
+            let _e119 = grid_coordinate((_e116 << 16u));
+            let _e120 = light_point(_e111, _e114, _e119);
             k_6 = k0_;
             loop {
-                let _e108 = k_6;
-                if (_e108 < k1_) {
+                let _e122 = k_6;
+                if (_e122 < k1_) {
                 } else {
                     break;
                 }
                 {
-                    t_4 = 0f;
-                    let _e112 = j_6;
-                    if !((_e112 > k0_)) {
+                    t_5 = 0f;
+                    let _e126 = j_6;
+                    if !((_e126 > k0_)) {
                         local_57 = cur_reached;
                     } else {
                         local_57 = true;
                     }
-                    let _e118 = local_57;
-                    if _e118 {
-                        let _e119 = k_6;
-                        let _e122 = (*doms_2)[_e119].c;
-                        let _e125 = s_11.light;
-                        let _e127 = lights_prev[_e125];
-                        let _e129 = s_11.u;
-                        let _e130 = k_6;
-                        let _e133 = (*doms_2)[_e130].x;
-                        let _e134 = k_6;
-                        let _e137 = (*doms_2)[_e134].n;
-                        let _e138 = k_6;
-                        let _e141 = (*doms_2)[_e138].m;
-                        let _e142 = reuse_target(q_8, _e127, _e129, _e133, _e137, _e141);
-                        t_4 = (_e122 * _e142);
+                    let _e132 = local_57;
+                    if _e132 {
+                        let _e133 = k_6;
+                        let d_10 = (*doms_2)[_e133];
+                        let _e140 = reuse_trust((_e120 - x_17), (_e120 - d_10.x));
+                        let _e144 = s_11.light;
+                        let _e146 = lights_prev[_e144];
+                        let _e148 = s_11.u;
+                        let _e152 = reuse_target(q_8, _e146, _e148, d_10.x, d_10.n, d_10.m);
+                        t_5 = ((d_10.c * _e140) * _e152);
                     }
-                    let _e144 = all_1;
-                    let _e145 = t_4;
-                    all_1 = (_e144 + _e145);
-                    let _e147 = k_6;
-                    let _e150 = j_6;
-                    if ((_e147 + 1u) == _e150) {
-                        let _e152 = t_4;
-                        own_1 = _e152;
+                    let _e154 = all_1;
+                    let _e155 = t_5;
+                    all_1 = (_e154 + _e155);
+                    let _e157 = k_6;
+                    let _e160 = j_6;
+                    if ((_e157 + 1u) == _e160) {
+                        let _e162 = t_5;
+                        own_1 = _e162;
                     }
                 }
                 continuing {
-                    let _e154 = k_6;
-                    k_6 = (_e154 + 1u);
+                    let _e164 = k_6;
+                    k_6 = (_e164 + 1u);
                 }
             }
-            let _e156 = own_1;
-            let _e157 = all_1;
-            let _e158 = w_in;
-            let _e159 = gris_weight(_e156, _e157, _e87, _e158);
-            let _e160 = w_sum_3;
-            w_sum_3 = (_e160 + _e159);
-            let _e162 = (*hs_1);
-            let _e163 = pcg_hash(_e162);
-            (*hs_1) = _e163;
-            if (_e159 > 0f) {
-                let _e168 = w_sum_3;
-                let _e169 = (*hs_1);
-                let _e170 = xi_from_bits(_e169);
-                let _e171 = weighted_replace(_e159, _e168, _e170);
-                local_58 = _e171;
+            let _e166 = own_1;
+            let _e167 = all_1;
+            let _e168 = w_in;
+            let _e169 = gris_weight(_e166, _e167, _e87, _e168);
+            let _e170 = w_sum_3;
+            w_sum_3 = (_e170 + _e169);
+            let _e172 = (*hs_1);
+            let _e173 = pcg_hash(_e172);
+            (*hs_1) = _e173;
+            if (_e169 > 0f) {
+                let _e178 = w_sum_3;
+                let _e179 = (*hs_1);
+                let _e180 = xi_from_bits(_e179);
+                let _e181 = weighted_replace(_e169, _e178, _e180);
+                local_58 = _e181;
             } else {
                 local_58 = false;
             }
-            let _e173 = local_58;
-            if _e173 {
-                let _e174 = s_11;
-                out = _e174;
+            let _e183 = local_58;
+            if _e183 {
+                let _e184 = s_11;
+                out = _e184;
                 out_target = _e87;
             }
         }
         continuing {
-            let _e176 = j_6;
-            j_6 = (_e176 + 1u);
+            let _e186 = j_6;
+            j_6 = (_e186 + 1u);
         }
     }
-    let _e179 = w_sum_3;
-    let _e180 = out_target;
-    let _e181 = gris_contribution_weight(_e179, _e180);
-    out.w = _e181;
-    let _e182 = out;
-    return _e182;
+    let _e189 = w_sum_3;
+    let _e190 = out_target;
+    let _e191 = gris_contribution_weight(_e189, _e190);
+    out.w = _e191;
+    let _e192 = out;
+    return _e192;
 }
 
 @compute @workgroup_size(8, 8, 1) 

@@ -39,6 +39,7 @@ const BSH_TAIL: u32 = 2147483648u;
 const BSH_TAIL_BINS: u32 = 1024u;
 const BSH_TAIL_MAX: u32 = 64u;
 const RESERVOIR_FULL: u32 = 4294967295u;
+const REUSE_TRUST_SCALE: f32 = 64f;
 const GGX_ALPHA_MIN: f32 = 0.001f;
 const RANGE_SCALE_MAX: f32 = 64f;
 const LIGHT_BVH_LEAF: u32 = 4294967295u;
@@ -170,8 +171,8 @@ fn xi_rotated(seed_2: u32, frame_1: u32, light_1: u32, bits_1: u32) -> f32 {
     let _e17 = reverse_bits(frame_1);
     let _e18 = laine_karras(_e17, _e16);
     let _e20 = laine_karras(0u, _e16);
-    let t_2 = (_e18 ^ _e20);
-    let _e22 = add_wrap_u32_(o_2, t_2);
+    let t_3 = (_e18 ^ _e20);
+    let _e22 = add_wrap_u32_(o_2, t_3);
     let _e23 = xi_from_bits(_e22);
     return _e23;
 }
@@ -343,8 +344,8 @@ fn group_first(g: u32, bw_2: u32, bh_1: u32, gw_2: u32, gh_1: u32) -> u32 {
     let _e5 = groups_across(bw_2, gw_2);
     let gx = (g % _e5);
     let gy = (g / _e5);
-    let h_2 = min(gh_1, (bh_1 - (gh_1 * gy)));
-    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_2));
+    let h_3 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_3));
 }
 
 fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
@@ -366,20 +367,20 @@ fn cluster_index(bx: u32, by: u32, bw_4: u32, bh_3: u32, gw_4: u32, gh_3: u32) -
 
 fn cluster_x(c_3: u32, bw_5: u32, bh_4: u32, gw_5: u32, gh_4: u32) -> u32 {
     let gy_3 = (c_3 / (gh_4 * bw_5));
-    let h_3 = min(gh_4, (bh_4 - (gh_4 * gy_3)));
+    let h_4 = min(gh_4, (bh_4 - (gh_4 * gy_3)));
     let rest = (c_3 - ((gy_3 * gh_4) * bw_5));
-    let gx_3 = (rest / (gw_5 * h_3));
+    let gx_3 = (rest / (gw_5 * h_4));
     let w_16 = min(gw_5, (bw_5 - (gw_5 * gx_3)));
-    return ((gx_3 * gw_5) + ((rest - ((gx_3 * gw_5) * h_3)) % w_16));
+    return ((gx_3 * gw_5) + ((rest - ((gx_3 * gw_5) * h_4)) % w_16));
 }
 
 fn cluster_y(c_4: u32, bw_6: u32, bh_5: u32, gw_6: u32, gh_5: u32) -> u32 {
     let gy_4 = (c_4 / (gh_5 * bw_6));
-    let h_4 = min(gh_5, (bh_5 - (gh_5 * gy_4)));
+    let h_5 = min(gh_5, (bh_5 - (gh_5 * gy_4)));
     let rest_1 = (c_4 - ((gy_4 * gh_5) * bw_6));
-    let gx_4 = (rest_1 / (gw_6 * h_4));
+    let gx_4 = (rest_1 / (gw_6 * h_5));
     let w_17 = min(gw_6, (bw_6 - (gw_6 * gx_4)));
-    return ((gy_4 * gh_5) + ((rest_1 - ((gx_4 * gw_6) * h_4)) / w_17));
+    return ((gy_4 * gh_5) + ((rest_1 - ((gx_4 * gw_6) * h_5)) / w_17));
 }
 
 fn map_index(tx: u32, ty: u32, side: u32) -> u32 {
@@ -503,8 +504,8 @@ fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
-    let t_3 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return select(((t_3 * t_3) * (3f - (2f * t_3))), (t_3 * t_3), (shape > 0.5f));
+    let t_4 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return select(((t_4 * t_4) * (3f - (2f * t_4))), (t_4 * t_4), (shape > 0.5f));
 }
 
 fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
@@ -879,6 +880,15 @@ fn gris_weight(own: f32, all_: f32, p_hat: f32, w_7: f32) -> f32 {
     return (((own / all_) * p_hat) * w_7);
 }
 
+fn reuse_trust(h: vec3<f32>, t_1: vec3<f32>) -> f32 {
+    let d2_18 = dot(h, h);
+    if !((d2_18 > 0f)) {
+        return 1f;
+    }
+    let c_20 = (h - t_1);
+    return (d2_18 / (d2_18 + (REUSE_TRUST_SCALE * dot(c_20, c_20))));
+}
+
 fn gris_contribution_weight(w_sum_3: f32, p_hat_1: f32) -> f32 {
     if !((p_hat_1 > 0f)) {
         return 0f;
@@ -985,8 +995,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_1 = (alpha * alpha);
-    let t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_4 * t_4));
+    let t_5 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_5 * t_5));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -1012,9 +1022,9 @@ fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_20 = saturate((1f - v_h));
-    let c2_3 = (c_20 * c_20);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_3 * c2_3) * c_20)));
+    let c_21 = saturate((1f - v_h));
+    let c2_3 = (c_21 * c_21);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_3 * c2_3) * c_21)));
 }
 
 fn specular_fresnel(base_4: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -1029,12 +1039,12 @@ fn diffuse_brdf(base_5: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
 }
 
 fn half_cosine(v_3: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h_5 = (v_3 + l);
-    let len2_ = dot(h_5, h_5);
+    let h_6 = (v_3 + l);
+    let len2_ = dot(h_6, h_6);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v_3, h_5) / sqrt(len2_)));
+    return saturate((dot(v_3, h_6) / sqrt(len2_)));
 }
 
 fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_14: vec3<f32>, v_4: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
@@ -1053,10 +1063,10 @@ fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     }
     let hs = (v_4 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
-    let h_6 = (hs * inv);
-    let c_21 = cross(n_14, h_6);
-    let _e32 = ggx_d(dot(n_14, h_6), dot(c_21, c_21), alpha_3);
-    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_6));
+    let h_7 = (hs * inv);
+    let c_22 = cross(n_14, h_7);
+    let _e32 = ggx_d(dot(n_14, h_7), dot(c_22, c_22), alpha_3);
+    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_7));
     let _e35 = smith_visibility(n_l_2, n_v_3, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1200,9 +1210,9 @@ fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_9: f32) -> f32 {
     let hs_1 = (wi_2 + wo);
     let m_2 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
     let _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_9);
-    let t_5 = sqrt((((alpha_9 * alpha_9) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    let t_6 = sqrt((((alpha_9 * alpha_9) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
     let _e43 = bounded_vndf_k(wi_2, alpha_9);
-    return (_e28 / (2f * ((_e43 * wi_2.z) + t_5)));
+    return (_e28 / (2f * ((_e43 * wi_2.z) + t_6)));
 }
 
 fn bsdf_sample(n_18: vec3<f32>, v_8: vec3<f32>, alpha_10: f32, p_spec: f32, u1_4: f32, u2_4: f32) -> vec3<f32> {
@@ -1254,9 +1264,9 @@ fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_5: f32, reflectance_1: f32, 
     }
     let _e15 = bevy_alpha(r_5);
     let n_v_4 = max(dot(n_20, v_10), 0.0001f);
-    let h_7 = normalize((l_5 + v_10));
-    let n_h = saturate(dot(n_20, h_7));
-    let l_h = saturate(dot(l_5, h_7));
+    let h_8 = normalize((l_5 + v_10));
+    let n_h = saturate(dot(n_20, h_8));
+    let l_h = saturate(dot(l_5, h_8));
     let f90_d_7 = (0.5f + (((2f * _e15) * l_h) * l_h));
     let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_7, n_l_3);
     let _e41 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_7, n_v_4);
@@ -1311,7 +1321,7 @@ fn emitter_cone(center: vec3<f32>, radius_1: f32, axis: vec3<f32>, cos_o: f32, p
     if _e15 {
         return vec4<f32>(-2f, 0.000000000001f, -1f, 0f);
     }
-    let d2_18 = max(max(dist2_1, r2_11), MIN_D2_);
+    let d2_19 = max(max(dist2_1, r2_11), MIN_D2_);
     let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_19 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
     let _e38 = safe_sqrt((1f - (cos_w * cos_w)));
@@ -1321,7 +1331,7 @@ fn emitter_cone(center: vec3<f32>, radius_1: f32, axis: vec3<f32>, cos_o: f32, p
     let _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
     let _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
     let _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
-    return vec4<f32>(_e50, d2_18, _e39, _e43);
+    return vec4<f32>(_e50, d2_19, _e39, _e43);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_2: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -1353,8 +1363,8 @@ fn cone_cos_of(v_11: vec3<f32>, d2_9: f32, a_5: f32, d_1: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_22 = cross(v_11, d_1);
-    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_22, c_22)) * a_5)) / d2_9), 1f);
+    let c_23 = cross(v_11, d_1);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_23, c_23)) * a_5)) / d2_9), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_3: f32, p_2: vec3<f32>, d_2: vec3<f32>) -> f32 {
@@ -1364,8 +1374,8 @@ fn cone_cos_toward(center_2: vec3<f32>, radius_3: f32, p_2: vec3<f32>, d_2: vec3
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_6 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1f, (rl.w * rl.w));
+    let t_7 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_7 * t_7))), 1f, (rl.w * rl.w));
 }
 
 fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_4: f32, p_3: vec3<f32>, r_6: vec3<f32>) -> f32 {
@@ -1615,15 +1625,15 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_7 = (dot(e2_2, q_6) * inv_1);
-    if (t_7 > t_min) {
-        local_28 = (t_7 < t_max_1);
+    let t_8 = (dot(e2_2, q_6) * inv_1);
+    if (t_8 > t_min) {
+        local_28 = (t_8 < t_max_1);
     } else {
         local_28 = false;
     }
     let _e51 = local_28;
     if _e51 {
-        return t_7;
+        return t_8;
     }
     return -1f;
 }
@@ -1662,8 +1672,8 @@ fn bilateral_weight(n_26: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
     let d_11 = ((zj - z_1) * inv_sz);
-    let t_8 = max((1f - (d_11 * d_11)), 0f);
-    return (((dn8_ * dn8_) * t_8) * t_8);
+    let t_9 = max((1f - (d_11 * d_11)), 0f);
+    return (((dn8_ * dn8_) * t_9) * t_9);
 }
 
 fn interleave_subset(x_15: u32, y_2: u32, period_2: u32) -> u32 {
@@ -1750,8 +1760,8 @@ fn vpl_near_weight(d2_11: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_9 = clamp(((near_r2_ - d2_11) / (0.75f * near_r2_)), 0f, 1f);
-    return ((t_9 * t_9) * (3f - (2f * t_9)));
+    let t_10 = clamp(((near_r2_ - d2_11) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_10 * t_10) * (3f - (2f * t_10)));
 }
 
 fn vpl_far_weight(d2_12: f32, near_r2_1: f32) -> f32 {
@@ -1794,9 +1804,9 @@ fn vpl_near_fixed_share(range2_3: f32, d2_16: f32, near_r2_6: f32) -> f32 {
     return select(0f, _e3, (_e4 & (_e3 > 0f)));
 }
 
-fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_11: f32, h: f32) -> vec3<f32> {
+fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_11: f32, h_1: f32) -> vec3<f32> {
     let sx = (((2f * px) / w_11) - 1f);
-    let sy = (1f - ((2f * py) / h));
+    let sy = (1f - ((2f * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
@@ -1829,8 +1839,8 @@ fn path_survival(beta: vec3<f32>) -> f32 {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05f, 0.95f);
 }
 
-fn light_map_coord(t_1: u32, size_4: u32) -> f32 {
-    let _e2 = to_f32_(t_1);
+fn light_map_coord(t_2: u32, size_4: u32) -> f32 {
+    let _e2 = to_f32_(t_2);
     let _e7 = to_f32_(size_4);
     return (((2f * (_e2 + 0.5f)) / _e7) - 1f);
 }
@@ -1848,8 +1858,8 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_6: vec3<f32>, exten
 
 fn display_encode(x_16: f32) -> f32 {
     let v_24 = max(x_16, 0f);
-    let t_10 = ((2f * v_24) / (1f + (2f * v_24)));
-    return select(((1.055f * pow(t_10, 0.41666666f)) - 0.055f), (12.92f * t_10), (t_10 <= 0.0031308f));
+    let t_11 = ((2f * v_24) / (1f + (2f * v_24)));
+    return select(((1.055f * pow(t_11, 0.41666666f)) - 0.055f), (12.92f * t_11), (t_11 <= 0.0031308f));
 }
 
 fn light_map_depth(rel_1: vec3<f32>, axis_7: vec3<f32>, perspective_1: bool) -> f32 {
@@ -1861,9 +1871,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 }
 
 fn point_irradiance(intensity_1: vec3<f32>, n_28: vec3<f32>, v_13: vec3<f32>) -> vec3<f32> {
-    let d2_19 = dot(v_13, v_13);
-    let cos_x_2 = (dot(n_28, v_13) / sqrt(max(d2_19, MIN_D2_)));
-    let _e11 = inverse_square(d2_19);
+    let d2_20 = dot(v_13, v_13);
+    let cos_x_2 = (dot(n_28, v_13) / sqrt(max(d2_20, MIN_D2_)));
+    let _e11 = inverse_square(d2_20);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
@@ -1880,8 +1890,8 @@ fn ortho_texel_width(extent_4: f32, size_7: f32) -> f32 {
 }
 
 fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
-    let c_23 = clamp(cos_light_1, 0.02f, 1f);
-    return (texel * (1.5f + (sqrt((1f - (c_23 * c_23))) / c_23)));
+    let c_24 = clamp(cos_light_1, 0.02f, 1f);
+    return (texel * (1.5f + (sqrt((1f - (c_24 * c_24))) / c_24)));
 }
 
 fn shadow_lit(d_6: f32, d_map: f32, bias: f32) -> bool {
@@ -1904,15 +1914,15 @@ fn primary_light_dir(x_17: vec3<f32>, origin: vec3<f32>, axis_8: vec3<f32>, pers
     var local_36: bool;
 
     let v_25 = (origin - x_17);
-    let d2_20 = dot(v_25, v_25);
+    let d2_21 = dot(v_25, v_25);
     if perspective_2 {
-        local_36 = (d2_20 > 0f);
+        local_36 = (d2_21 > 0f);
     } else {
         local_36 = false;
     }
     let _e11 = local_36;
     if _e11 {
-        return (v_25 / vec3(sqrt(d2_20)));
+        return (v_25 / vec3(sqrt(d2_21)));
     }
     return -(axis_8);
 }
@@ -2012,8 +2022,8 @@ fn temporal_change(l_6: f32, m1_: f32, noise: f32, n_31: f32) -> f32 {
         return 0f;
     }
     let sigma = sqrt((max(noise, 0f) * (1f + (1f / n_31))));
-    let t_11 = (abs((l_6 - m1_)) / ((sigma + (0.001f * max(abs(l_6), abs(m1_)))) + 0.00000000000000000001f));
-    return clamp(((t_11 - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
+    let t_12 = (abs((l_6 - m1_)) / ((sigma + (0.001f * max(abs(l_6), abs(m1_)))) + 0.00000000000000000001f));
+    return clamp(((t_12 - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
 }
 
 fn next_history_length(n_32: f32, lambda: f32, max_history: f32) -> f32 {
@@ -2065,12 +2075,12 @@ fn persistent_change(l_7: f32, last: f32, m1_1: f32, noise_1: f32, n_36: f32) ->
     return min(_e11, _e12);
 }
 
-fn temporal_color(c_15: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
-    let hc = vec3<f32>(h_1.x, h_1.y, h_1.z);
+fn temporal_color(c_15: vec3<f32>, h_2: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
+    let hc = vec3<f32>(h_2.x, h_2.y, h_2.z);
     let _e9 = luminance(c_15);
     let _e10 = luminance(hc);
-    let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h_1.w);
-    let _e14 = next_history_length(h_1.w, _e12, max_history_1);
+    let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h_2.w);
+    let _e14 = next_history_length(h_2.w, _e12, max_history_1);
     let _e15 = temporal_alpha(_e14);
     let v_26 = ((hc * (1f - _e15)) + (c_15 * _e15));
     return vec4<f32>(v_26.x, v_26.y, v_26.z, _e14);
@@ -2084,7 +2094,7 @@ fn temporal_moments(c_16: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, l
         return vec4<f32>(_e6, 0f, depth_1, 0f);
     }
     let d_12 = (_e6 - last_2);
-    let d2_21 = ((0.5f * d_12) * d_12);
+    let d2_22 = ((0.5f * d_12) * d_12);
     let cap = (16f * noise_3);
     if (prev_len >= TEMPORAL_MIN_MOMENTS) {
         local_45 = (noise_3 > 0f);
@@ -2092,7 +2102,7 @@ fn temporal_moments(c_16: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, l
         local_45 = false;
     }
     let _e26 = local_45;
-    let sample = select(d2_21, min(d2_21, cap), _e26);
+    let sample = select(d2_22, min(d2_22, cap), _e26);
     let _e31 = temporal_alpha((len_3 - 1f));
     return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth_1, 0f);
 }

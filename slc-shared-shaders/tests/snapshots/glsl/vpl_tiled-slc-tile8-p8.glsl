@@ -106,6 +106,7 @@ const uint BSH_TAIL = 2147483648u;
 const uint BSH_TAIL_BINS = 1024u;
 const uint BSH_TAIL_MAX = 64u;
 const uint RESERVOIR_FULL = 4294967295u;
+const float REUSE_TRUST_SCALE = 64.0;
 const float GGX_ALPHA_MIN = 0.001;
 const float RANGE_SCALE_MAX = 64.0;
 const uint LIGHT_BVH_LEAF = 4294967295u;

@@ -218,6 +218,7 @@ static const uint BSH_TAIL = 2147483648u;
 static const uint BSH_TAIL_BINS = 1024u;
 static const uint BSH_TAIL_MAX = 64u;
 static const uint RESERVOIR_FULL = 4294967295u;
+static const float REUSE_TRUST_SCALE = 64.0;
 static const float GGX_ALPHA_MIN = 0.001;
 static const float RANGE_SCALE_MAX = 64.0;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
@@ -515,6 +516,16 @@ float gris_weight(float own, float all_, float p_hat, float w_5)
     return (((own / all_) * p_hat) * w_5);
 }
 
+float reuse_trust(float3 h_1, float3 t_1)
+{
+    float d2_7 = dot(h_1, h_1);
+    if (!((d2_7 > 0.0))) {
+        return 1.0;
+    }
+    float3 c_11 = (h_1 - t_1);
+    return (d2_7 / (d2_7 + (REUSE_TRUST_SCALE * dot(c_11, c_11))));
+}
+
 float gris_contribution_weight(float w_sum_2, float p_hat_1)
 {
     if (!((p_hat_1 > 0.0))) {
@@ -529,8 +540,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t_5 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_5 * t_5));
+    float t_6 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_6 * t_6));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -559,9 +570,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_11 = saturate((1.0 - v_h));
-    float c2_1 = (c_11 * c_11);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_11)));
+    float c_12 = saturate((1.0 - v_h));
+    float c2_1 = (c_12 * c_12);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_12)));
 }
 
 float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -681,9 +692,9 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_5, float reflectance_1
     }
     const float _e15 = bevy_alpha(r_5);
     float n_v_3 = max(dot(n_4, v_1), 0.0001);
-    float3 h_3 = normalize((l + v_1));
-    float n_h = saturate(dot(n_4, h_3));
-    float l_h = saturate(dot(l, h_3));
+    float3 h_4 = normalize((l + v_1));
+    float n_h = saturate(dot(n_4, h_4));
+    float l_h = saturate(dot(l, h_4));
     float f90_d_3 = (0.5 + (((2.0 * _e15) * l_h) * l_h));
     const float3 _e35 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
     const float3 _e41 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
@@ -722,8 +733,8 @@ float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_12 = cross(v_2, d);
-    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_12, c_12)) * a_3)) / d2_4), 1.0);
+    float3 c_13 = cross(v_2, d);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_13, c_13)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
@@ -735,8 +746,8 @@ float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 
 float range_scale_at(float4 rl, float cos_t)
 {
-    float t_6 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1.0, (rl.w * rl.w));
+    float t_7 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_7 * t_7))), 1.0, (rl.w * rl.w));
 }
 
 float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_6)
@@ -835,15 +846,15 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, f
     if (_e42) {
         return -1.0;
     }
-    float t_7 = (dot(e2_, q_10) * inv);
-    if ((t_7 > t_min)) {
-        local_27 = (t_7 < t_max_1);
+    float t_8 = (dot(e2_, q_10) * inv);
+    if ((t_8 > t_min)) {
+        local_27 = (t_8 < t_max_1);
     } else {
         local_27 = false;
     }
     bool _e51 = local_27;
     if (_e51) {
-        return t_7;
+        return t_8;
     }
     return -1.0;
 }
@@ -969,9 +980,9 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_8 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_9 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_5, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_5, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1082,9 +1093,9 @@ bool bsh_reaches(BshNode node_4, float3 x_4, float3 r_8, float4 rl_3)
         return false;
     }
     float3 v_10 = (x_4 - node_4.center_);
-    float d2_7 = dot(v_10, v_10);
+    float d2_8 = dot(v_10, v_10);
     const float _e29 = bsh_reach_bound(node_4, rl_3.w);
-    if ((d2_7 > (_e29 * _e29))) {
+    if ((d2_8 > (_e29 * _e29))) {
         return false;
     }
     if ((node_4.child == BSH_NONE)) {
@@ -1093,12 +1104,12 @@ bool bsh_reaches(BshNode node_4, float3 x_4, float3 r_8, float4 rl_3)
         const bool _e42 = sphere_contains_point(node_4.center_, _e41, x_4);
         return _e42;
     }
-    const float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_8, rl_3);
+    const float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_8, r_8, rl_3);
     float s_c = (_e45 * 1.001);
     const float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
-    if ((d2_7 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_30 = (d2_7 <= (reach * reach));
+    if ((d2_8 <= ((node_4.radius * node_4.radius) * s_c))) {
+        local_30 = (d2_8 <= (reach * reach));
     } else {
         local_30 = false;
     }
@@ -1198,12 +1209,12 @@ uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3
     return end;
 }
 
-float next_threshold(float sum, inout uint h_1)
+float next_threshold(float sum, inout uint h_2)
 {
-    uint _e2 = h_1;
+    uint _e2 = h_2;
     const uint _e3 = pcg_hash(_e2);
-    h_1 = _e3;
-    uint _e4 = h_1;
+    h_2 = _e3;
+    uint _e4 = h_2;
     const float _e5 = xi_from_bits(_e4);
     const float _e6 = weighted_threshold(sum, _e5);
     return _e6;
@@ -1243,10 +1254,10 @@ Connection connect_record(GpuLight l_3, float3 x_5, float3 n_6, float3 ng_1, flo
     }
     float3 _e41 = c_8.y;
     float3 v_11 = (x_5 - _e41);
-    float d2_8 = dot(v_11, v_11);
-    const float3 _e48 = light_intensity(l_3, (v_11 / (sqrt(d2_8)).xxx));
+    float d2_9 = dot(v_11, v_11);
+    const float3 _e48 = light_intensity(l_3, (v_11 / (sqrt(d2_9)).xxx));
     float _e50 = c_8.cos_x;
-    const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    const float _e51 = connection_factor(_e50, d2_9, rt2_2, w_res);
     c_8.e = (_e48 * _e51);
     Connection _e53 = c_8;
     const Connection connection_1 = _e53;
@@ -1291,8 +1302,8 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
 
 float light_range_scale(uint li_1, float3 x_7, float3 r_9, float4 rl_4)
 {
-    GpuLightCone c_13 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_4, c_13.center_, c_13.radius, x_7, r_9);
+    GpuLightCone c_14 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_4, c_14.center_, c_14.radius, x_7, r_9);
     return _e9;
 }
 
@@ -1377,7 +1388,7 @@ bool box_is_empty(WorkgroupBox b_6)
     return (b_6.lo.x > b_6.hi.x);
 }
 
-uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to)
+uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at, uint start_2, uint to)
 {
     uint p_6 = (uint)0;
     uint b_7 = (uint)0;
@@ -1391,7 +1402,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
     }
     uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
     p_6 = at;
-    const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w);
     b_7 = _e21;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1401,7 +1412,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         if (!loop_init_2) {
             uint _e53 = b_7;
             uint _e56 = asuint(bsh_nodes.Load(20+_e53*32));
-            const uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            const uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_2.lo, t_2.hi, t_2.w);
             b_7 = _e60;
         }
         loop_init_2 = false;
@@ -1456,7 +1467,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
 TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_2)
 {
     bool local_37 = (bool)0;
-    TileWalk t_2 = (TileWalk)0;
+    TileWalk t_3 = (TileWalk)0;
     uint s_4 = (uint)0;
     uint sum_1 = 0u;
     uint s_5 = 0u;
@@ -1472,10 +1483,10 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_2)
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
-    t_2 = ConstructTileWalk(_e15.lo, _e15.hi, asfloat(_e19), 0u);
+    t_3 = ConstructTileWalk(_e15.lo, _e15.hi, asfloat(_e19), 0u);
     const bool _e24 = box_is_empty(_e15);
     if (_e24) {
-        TileWalk _e25 = t_2;
+        TileWalk _e25 = t_3;
         const TileWalk tilewalk = _e25;
         return tilewalk;
     }
@@ -1498,7 +1509,7 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_2)
         {
             uint _e31 = s_4;
             uint _e33 = s_4;
-            TileWalk _e34 = t_2;
+            TileWalk _e34 = t_3;
             const uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
             subtree_at[min(uint(_e31), 255u)] = _e39;
         }
@@ -1522,12 +1533,12 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_2)
             }
             {
                 uint _e53 = s_5;
-                uint c_14 = subtree_at[min(uint(_e53), 255u)];
+                uint c_15 = subtree_at[min(uint(_e53), 255u)];
                 uint _e57 = s_5;
                 uint _e59 = sum_1;
                 subtree_at[min(uint(_e57), 255u)] = _e59;
                 uint _e60 = sum_1;
-                sum_1 = (_e60 + c_14);
+                sum_1 = (_e60 + c_15);
             }
         }
         uint _e66 = sum_1;
@@ -1536,19 +1547,19 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_2)
     GroupMemoryBarrierWithGroupSync();
     uint _e69 = tile_total;
     GroupMemoryBarrierWithGroupSync();
-    t_2.total = _e69;
-    TileWalk _e70 = t_2;
+    t_3.total = _e69;
+    TileWalk _e70 = t_3;
     const TileWalk tilewalk_1 = _e70;
     return tilewalk_1;
 }
 
-uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3)
+uint tile_walk_fill(uint li_5, TileWalk t_4, uint start_3)
 {
     uint s_6 = (uint)0;
     uint past = (uint)0;
     bool local_38 = (bool)0;
 
-    uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    uint to_1 = min(t_4.total, (start_3 + TILE_LIST));
     s_6 = li_5;
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
@@ -1568,7 +1579,7 @@ uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3)
         {
             uint _e12 = s_6;
             uint at_1 = subtree_at[min(uint(_e12), 255u)];
-            past = t_3.total;
+            past = t_4.total;
             uint _e17 = s_6;
             if (((_e17 + 1u) < BSH_TILE_SUBTREES)) {
                 uint _e23 = s_6;
@@ -1584,7 +1595,7 @@ uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3)
             bool _e34 = local_38;
             if (_e34) {
                 uint _e35 = s_6;
-                const uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+                const uint _e37 = tile_subtree(_e35, t_4, true, at_1, start_3, to_1);
             }
         }
     }
@@ -1915,15 +1926,15 @@ bool reached_before(uint li_9, uint cells_5, Domain d_8, float3 x_15, float3 n_1
         {
             const uint _e57 = previous_index(d_8.pixel);
             uint _e60 = q_7;
-            ReuseSlot h_4 = ConstructReuseSlot(asuint(reuse_pixels.Load(_e60*12+48+_e57*144+0)), asuint(reuse_pixels.Load(_e60*12+48+_e57*144+4)), asfloat(reuse_pixels.Load(_e60*12+48+_e57*144+8)));
-            if ((h_4.w > 0.0)) {
-                local_45 = (h_4.light < ((NagaBufferLength(lights) - 0) / 64));
+            ReuseSlot h_5 = ConstructReuseSlot(asuint(reuse_pixels.Load(_e60*12+48+_e57*144+0)), asuint(reuse_pixels.Load(_e60*12+48+_e57*144+4)), asfloat(reuse_pixels.Load(_e60*12+48+_e57*144+8)));
+            if ((h_5.w > 0.0)) {
+                local_45 = (h_5.light < ((NagaBufferLength(lights) - 0) / 64));
             } else {
                 local_45 = false;
             }
             bool _e73 = local_45;
             if (_e73) {
-                const uint2 _e78 = sample_key(h_4.light, h_4.u);
+                const uint2 _e78 = sample_key(h_5.light, h_5.u);
                 local_46 = all((_e78 == _e49));
             } else {
                 local_46 = false;
@@ -1954,7 +1965,7 @@ int2 naga_f2i32(float2 value) {
     return int2(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-uint reuse_domains(float3 x_16, float3 n_15, float d_9, uint h_2, inout Domain doms_1[3])
+uint reuse_domains(float3 x_16, float3 n_15, float d_9, uint h_3, inout Domain doms_1[3])
 {
     uint nd = 0u;
     uint hr = (uint)0;
@@ -1983,7 +1994,7 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_9, uint h_2, inout Domain d
     if ((_e33.z <= 0.0)) {
         return 0u;
     }
-    hr = h_2;
+    hr = h_3;
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -2019,23 +2030,23 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_9, uint h_2, inout Domain d
                 p_7 = (_e55 + _e61);
             }
             float2 _e63 = p_7;
-            int2 t_9 = naga_f2i32(round(_e63));
-            if (!((t_9.x < int(0)))) {
-                local_47 = (t_9.y < int(0));
+            int2 t_10 = naga_f2i32(round(_e63));
+            if (!((t_10.x < int(0)))) {
+                local_47 = (t_10.y < int(0));
             } else {
                 local_47 = true;
             }
             bool _e76 = local_47;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_48 = (t_9.x >= int(_e83));
+                local_48 = (t_10.x >= int(_e83));
             } else {
                 local_48 = true;
             }
             bool _e87 = local_48;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_49 = (t_9.y >= int(_e94));
+                local_49 = (t_10.y >= int(_e94));
             } else {
                 local_49 = true;
             }
@@ -2044,7 +2055,7 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_9, uint h_2, inout Domain d
                 continue;
             }
             uint _e103 = view.width;
-            uint pixel = ((uint(t_9.y) * _e103) + uint(t_9.x));
+            uint pixel = ((uint(t_10.y) * _e103) + uint(t_10.x));
             seen_1 = false;
             k_5 = 0u;
             uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
@@ -2124,7 +2135,7 @@ ReuseSlot gris_combine(uint q_8, ReuseSlot cur, bool cur_ris, float cur_c, bool 
     float own_1 = (float)0;
     float all_1 = (float)0;
     uint k_6 = (uint)0;
-    float t_4 = (float)0;
+    float t_5 = (float)0;
     bool local_57 = (bool)0;
     bool local_58 = (bool)0;
 
@@ -2135,8 +2146,8 @@ ReuseSlot gris_combine(uint q_8, ReuseSlot cur, bool cur_ris, float cur_c, bool 
         if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
         loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e176 = j_6;
-            j_6 = (_e176 + 1u);
+            uint _e186 = j_6;
+            j_6 = (_e186 + 1u);
         }
         loop_init_11 = false;
         uint _e22 = j_6;
@@ -2210,6 +2221,13 @@ ReuseSlot gris_combine(uint q_8, ReuseSlot cur, bool cur_ris, float cur_c, bool 
             own_1 = (cur_c * _e87);
             float _e105 = own_1;
             all_1 = _e105;
+            uint _e109 = s_11.light;
+            GpuLight _e111 = ConstructGpuLight(asfloat(lights.Load3(_e109*64+0)), asuint(lights.Load(_e109*64+12)), asfloat(lights.Load3(_e109*64+16)), asfloat(lights.Load(_e109*64+28)), asfloat(lights.Load3(_e109*64+32)), asfloat(lights.Load(_e109*64+44)), asfloat(lights.Load3(_e109*64+48)), asuint(lights.Load(_e109*64+60)));
+            uint _e113 = s_11.u;
+            const float _e114 = grid_coordinate(_e113);
+            uint _e116 = s_11.u;
+            const float _e119 = grid_coordinate((_e116 << 16u));
+            const float3 _e120 = light_point(_e111, _e114, _e119);
             k_6 = k0_;
             uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
             bool loop_init_12 = true;
@@ -2217,82 +2235,77 @@ ReuseSlot gris_combine(uint q_8, ReuseSlot cur, bool cur_ris, float cur_c, bool 
                 if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
                 loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
                 if (!loop_init_12) {
-                    uint _e154 = k_6;
-                    k_6 = (_e154 + 1u);
+                    uint _e164 = k_6;
+                    k_6 = (_e164 + 1u);
                 }
                 loop_init_12 = false;
-                uint _e108 = k_6;
-                if ((_e108 < k1_)) {
+                uint _e122 = k_6;
+                if ((_e122 < k1_)) {
                 } else {
                     break;
                 }
                 {
-                    t_4 = 0.0;
-                    uint _e112 = j_6;
-                    if (!((_e112 > k0_))) {
+                    t_5 = 0.0;
+                    uint _e126 = j_6;
+                    if (!((_e126 > k0_))) {
                         local_57 = cur_reached;
                     } else {
                         local_57 = true;
                     }
-                    bool _e118 = local_57;
-                    if (_e118) {
-                        uint _e119 = k_6;
-                        float _e122 = doms_2[min(uint(_e119), 2u)].c;
-                        uint _e125 = s_11.light;
-                        GpuLight _e127 = ConstructGpuLight(asfloat(lights_prev.Load3(_e125*64+0)), asuint(lights_prev.Load(_e125*64+12)), asfloat(lights_prev.Load3(_e125*64+16)), asfloat(lights_prev.Load(_e125*64+28)), asfloat(lights_prev.Load3(_e125*64+32)), asfloat(lights_prev.Load(_e125*64+44)), asfloat(lights_prev.Load3(_e125*64+48)), asuint(lights_prev.Load(_e125*64+60)));
-                        uint _e129 = s_11.u;
-                        uint _e130 = k_6;
-                        float3 _e133 = doms_2[min(uint(_e130), 2u)].x;
-                        uint _e134 = k_6;
-                        float3 _e137 = doms_2[min(uint(_e134), 2u)].n;
-                        uint _e138 = k_6;
-                        Material _e141 = doms_2[min(uint(_e138), 2u)].m;
-                        const float _e142 = reuse_target(q_8, _e127, _e129, _e133, _e137, _e141);
-                        t_4 = (_e122 * _e142);
+                    bool _e132 = local_57;
+                    if (_e132) {
+                        uint _e133 = k_6;
+                        Domain d_10 = doms_2[min(uint(_e133), 2u)];
+                        const float _e140 = reuse_trust((_e120 - x_17), (_e120 - d_10.x));
+                        uint _e144 = s_11.light;
+                        GpuLight _e146 = ConstructGpuLight(asfloat(lights_prev.Load3(_e144*64+0)), asuint(lights_prev.Load(_e144*64+12)), asfloat(lights_prev.Load3(_e144*64+16)), asfloat(lights_prev.Load(_e144*64+28)), asfloat(lights_prev.Load3(_e144*64+32)), asfloat(lights_prev.Load(_e144*64+44)), asfloat(lights_prev.Load3(_e144*64+48)), asuint(lights_prev.Load(_e144*64+60)));
+                        uint _e148 = s_11.u;
+                        const float _e152 = reuse_target(q_8, _e146, _e148, d_10.x, d_10.n, d_10.m);
+                        t_5 = ((d_10.c * _e140) * _e152);
                     }
-                    float _e144 = all_1;
-                    float _e145 = t_4;
-                    all_1 = (_e144 + _e145);
-                    uint _e147 = k_6;
-                    uint _e150 = j_6;
-                    if (((_e147 + 1u) == _e150)) {
-                        float _e152 = t_4;
-                        own_1 = _e152;
+                    float _e154 = all_1;
+                    float _e155 = t_5;
+                    all_1 = (_e154 + _e155);
+                    uint _e157 = k_6;
+                    uint _e160 = j_6;
+                    if (((_e157 + 1u) == _e160)) {
+                        float _e162 = t_5;
+                        own_1 = _e162;
                     }
                 }
             }
-            float _e156 = own_1;
-            float _e157 = all_1;
-            float _e158 = w_in;
-            const float _e159 = gris_weight(_e156, _e157, _e87, _e158);
-            float _e160 = w_sum_3;
-            w_sum_3 = (_e160 + _e159);
-            uint _e162 = hs_1;
-            const uint _e163 = pcg_hash(_e162);
-            hs_1 = _e163;
-            if ((_e159 > 0.0)) {
-                float _e168 = w_sum_3;
-                uint _e169 = hs_1;
-                const float _e170 = xi_from_bits(_e169);
-                const bool _e171 = weighted_replace(_e159, _e168, _e170);
-                local_58 = _e171;
+            float _e166 = own_1;
+            float _e167 = all_1;
+            float _e168 = w_in;
+            const float _e169 = gris_weight(_e166, _e167, _e87, _e168);
+            float _e170 = w_sum_3;
+            w_sum_3 = (_e170 + _e169);
+            uint _e172 = hs_1;
+            const uint _e173 = pcg_hash(_e172);
+            hs_1 = _e173;
+            if ((_e169 > 0.0)) {
+                float _e178 = w_sum_3;
+                uint _e179 = hs_1;
+                const float _e180 = xi_from_bits(_e179);
+                const bool _e181 = weighted_replace(_e169, _e178, _e180);
+                local_58 = _e181;
             } else {
                 local_58 = false;
             }
-            bool _e173 = local_58;
-            if (_e173) {
-                ReuseSlot _e174 = s_11;
-                out_ = _e174;
+            bool _e183 = local_58;
+            if (_e183) {
+                ReuseSlot _e184 = s_11;
+                out_ = _e184;
                 out_target = _e87;
             }
         }
     }
-    float _e179 = w_sum_3;
-    float _e180 = out_target;
-    const float _e181 = gris_contribution_weight(_e179, _e180);
-    out_.w = _e181;
-    ReuseSlot _e182 = out_;
-    const ReuseSlot reuseslot = _e182;
+    float _e189 = w_sum_3;
+    float _e190 = out_target;
+    const float _e191 = gris_contribution_weight(_e189, _e190);
+    out_.w = _e191;
+    ReuseSlot _e192 = out_;
+    const ReuseSlot reuseslot = _e192;
     return reuseslot;
 }
 

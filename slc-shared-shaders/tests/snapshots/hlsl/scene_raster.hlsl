@@ -102,6 +102,7 @@ static const uint BSH_TAIL = 2147483648u;
 static const uint BSH_TAIL_BINS = 1024u;
 static const uint BSH_TAIL_MAX = 64u;
 static const uint RESERVOIR_FULL = 4294967295u;
+static const float REUSE_TRUST_SCALE = 64.0;
 static const float GGX_ALPHA_MIN = 0.001;
 static const float RANGE_SCALE_MAX = 64.0;
 static const uint LIGHT_BVH_LEAF = 4294967295u;

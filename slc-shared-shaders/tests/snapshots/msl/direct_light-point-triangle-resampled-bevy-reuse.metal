@@ -242,6 +242,7 @@ constant uint BSH_TAIL = 2147483648u;
 constant uint BSH_TAIL_BINS = 1024u;
 constant uint BSH_TAIL_MAX = 64u;
 constant uint RESERVOIR_FULL = 4294967295u;
+constant float REUSE_TRUST_SCALE = 64.0;
 constant float GGX_ALPHA_MIN = 0.001;
 constant float RANGE_SCALE_MAX = 64.0;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
@@ -583,6 +584,18 @@ float gris_weight(
     return ((own / all) * p_hat) * w_5;
 }
 
+float reuse_trust(
+    metal::float3 h_1,
+    metal::float3 t_1
+) {
+    float d2_7 = metal::dot(h_1, h_1);
+    if (!((d2_7 > 0.0))) {
+        return 1.0;
+    }
+    metal::float3 c_11 = h_1 - t_1;
+    return d2_7 / (d2_7 + (REUSE_TRUST_SCALE * metal::dot(c_11, c_11)));
+}
+
 float gris_contribution_weight(
     float w_sum_2,
     float p_hat_1
@@ -602,8 +615,8 @@ float ggx_d(
         return 0.0;
     }
     float a2_ = alpha * alpha;
-    float t_5 = ((cos_h * cos_h) * a2_) + sin2_h;
-    return (a2_ * INV_PI) / (t_5 * t_5);
+    float t_6 = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t_6 * t_6);
 }
 
 float smith_root(
@@ -639,9 +652,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_11 = metal::saturate(1.0 - v_h);
-    float c2_1 = c_11 * c_11;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_11));
+    float c_12 = metal::saturate(1.0 - v_h);
+    float c2_1 = c_12 * c_12;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_12));
 }
 
 metal::float3 specular_fresnel(
@@ -791,9 +804,9 @@ metal::float3 bevy_brdf(
     }
     float _e15 = bevy_alpha(r_5);
     float n_v_3 = metal::max(metal::dot(n_4, v_1), 0.0001);
-    metal::float3 h_3 = metal::normalize(l + v_1);
-    float n_h = metal::saturate(metal::dot(n_4, h_3));
-    float l_h = metal::saturate(metal::dot(l, h_3));
+    metal::float3 h_4 = metal::normalize(l + v_1);
+    float n_h = metal::saturate(metal::dot(n_4, h_4));
+    float l_h = metal::saturate(metal::dot(l, h_4));
     float f90_d_3 = 0.5 + (((2.0 * _e15) * l_h) * l_h);
     metal::float3 _e35 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
     metal::float3 _e41 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
@@ -835,8 +848,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_12 = metal::cross(v_2, d);
-    return metal::min(((vd * metal::sqrt(h2_1)) + (metal::sqrt(metal::dot(c_12, c_12)) * a_3)) / d2_4, 1.0);
+    metal::float3 c_13 = metal::cross(v_2, d);
+    return metal::min(((vd * metal::sqrt(h2_1)) + (metal::sqrt(metal::dot(c_13, c_13)) * a_3)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -854,8 +867,8 @@ float range_scale_at(
     metal::float4 rl,
     float cos_t
 ) {
-    float t_6 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
-    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_6 * t_6)), 1.0, rl.w * rl.w);
+    float t_7 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_7 * t_7)), 1.0, rl.w * rl.w);
 }
 
 float range_scale_toward(
@@ -975,15 +988,15 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_7 = metal::dot(e2_, q_10) * inv;
-    if (t_7 > t_min) {
-        local_27 = t_7 < t_max_1;
+    float t_8 = metal::dot(e2_, q_10) * inv;
+    if (t_8 > t_min) {
+        local_27 = t_8 < t_max_1;
     } else {
         local_27 = false;
     }
     bool _e51 = local_27;
     if (_e51) {
-        return t_7;
+        return t_8;
     }
     return -1.0;
 }
@@ -1104,9 +1117,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_8 = geo_tris[_e42];
+                        GpuTriangle t_9 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_5, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_5, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1226,9 +1239,9 @@ bool bsh_reaches(
         return false;
     }
     metal::float3 v_10 = x_4 - node_4.center;
-    float d2_7 = metal::dot(v_10, v_10);
+    float d2_8 = metal::dot(v_10, v_10);
     float _e29 = bsh_reach_bound(node_4, rl_3.w);
-    if (d2_7 > (_e29 * _e29)) {
+    if (d2_8 > (_e29 * _e29)) {
         return false;
     }
     if (node_4.child == BSH_NONE) {
@@ -1237,12 +1250,12 @@ bool bsh_reaches(
         bool _e42 = sphere_contains_point(node_4.center, _e41, x_4);
         return _e42;
     }
-    float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_8, rl_3);
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_8, r_8, rl_3);
     float s_c = _e45 * 1.001;
     float _e50 = bsh_range_bound(node_4);
     float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
-    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_30 = d2_7 <= (reach * reach);
+    if (d2_8 <= ((node_4.radius * node_4.radius) * s_c)) {
+        local_30 = d2_8 <= (reach * reach);
     } else {
         local_30 = false;
     }
@@ -1359,12 +1372,12 @@ uint bsh_next_leaf_box(
 
 float next_threshold(
     float sum,
-    thread uint& h_1
+    thread uint& h_2
 ) {
-    uint _e2 = h_1;
+    uint _e2 = h_2;
     uint _e3 = pcg_hash(_e2);
-    h_1 = _e3;
-    uint _e4 = h_1;
+    h_2 = _e3;
+    uint _e4 = h_2;
     float _e5 = xi_from_bits(_e4);
     float _e6 = weighted_threshold(sum, _e5);
     return _e6;
@@ -1416,10 +1429,10 @@ Connection connect_record(
     }
     metal::float3 _e41 = c_8.y;
     metal::float3 v_11 = x_5 - _e41;
-    float d2_8 = metal::dot(v_11, v_11);
-    metal::float3 _e48 = light_intensity(l_3, v_11 / metal::float3(metal::sqrt(d2_8)));
+    float d2_9 = metal::dot(v_11, v_11);
+    metal::float3 _e48 = light_intensity(l_3, v_11 / metal::float3(metal::sqrt(d2_9)));
     float _e50 = c_8.cos_x;
-    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    float _e51 = connection_factor(_e50, d2_9, rt2_2, w_res);
     c_8.e = _e48 * _e51;
     Connection _e53 = c_8;
     return _e53;
@@ -1458,8 +1471,8 @@ float light_range_scale(
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_13 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_4, c_13.center, c_13.radius, x_7, r_9);
+    GpuLightCone c_14 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_4, c_14.center, c_14.radius, x_7, r_9);
     return _e9;
 }
 
@@ -1552,7 +1565,7 @@ bool box_is_empty(
 
 uint tile_subtree(
     uint s_3,
-    TileWalk t_1,
+    TileWalk t_2,
     bool list,
     uint at,
     uint start_2,
@@ -1572,7 +1585,7 @@ uint tile_subtree(
     }
     uint end_1 = bsh_nodes[_e8].next;
     p_6 = at;
-    uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+    uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w, bsh_nodes, _buffer_sizes);
     b_7 = _e21;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1582,7 +1595,7 @@ uint tile_subtree(
         if (!loop_init_2) {
             uint _e53 = b_7;
             uint _e56 = bsh_nodes[_e53].next;
-            uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+            uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_2.lo, t_2.hi, t_2.w, bsh_nodes, _buffer_sizes);
             b_7 = _e60;
         }
         loop_init_2 = false;
@@ -1641,7 +1654,7 @@ TileWalk tile_walk_begin(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_37 = {};
-    TileWalk t_2 = {};
+    TileWalk t_3 = {};
     uint s_4 = {};
     uint sum_1 = 0u;
     uint s_5 = 0u;
@@ -1656,10 +1669,10 @@ TileWalk tile_walk_begin(
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    t_2 = TileWalk {_e15.lo, _e15.hi, as_type<float>(unnamed_1), 0u};
+    t_3 = TileWalk {_e15.lo, _e15.hi, as_type<float>(unnamed_1), 0u};
     bool _e24 = box_is_empty(_e15);
     if (_e24) {
-        TileWalk _e25 = t_2;
+        TileWalk _e25 = t_3;
         return _e25;
     }
     s_4 = li_4;
@@ -1681,7 +1694,7 @@ TileWalk tile_walk_begin(
         {
             uint _e31 = s_4;
             uint _e33 = s_4;
-            TileWalk _e34 = t_2;
+            TileWalk _e34 = t_3;
             uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
             subtree_at.inner[_e31] = _e39;
         }
@@ -1705,12 +1718,12 @@ TileWalk tile_walk_begin(
             }
             {
                 uint _e53 = s_5;
-                uint c_14 = subtree_at.inner[_e53];
+                uint c_15 = subtree_at.inner[_e53];
                 uint _e57 = s_5;
                 uint _e59 = sum_1;
                 subtree_at.inner[_e57] = _e59;
                 uint _e60 = sum_1;
-                sum_1 = _e60 + c_14;
+                sum_1 = _e60 + c_15;
             }
         }
         uint _e66 = sum_1;
@@ -1719,14 +1732,14 @@ TileWalk tile_walk_begin(
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_2 = tile_total;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    t_2.total = unnamed_2;
-    TileWalk _e70 = t_2;
+    t_3.total = unnamed_2;
+    TileWalk _e70 = t_3;
     return _e70;
 }
 
 uint tile_walk_fill(
     uint li_5,
-    TileWalk t_3,
+    TileWalk t_4,
     uint start_3,
     device type_13 const& bsh_nodes,
     threadgroup type_21& tile_list,
@@ -1736,7 +1749,7 @@ uint tile_walk_fill(
     uint s_6 = {};
     uint past = {};
     bool local_38 = {};
-    uint to_1 = metal::min(t_3.total, start_3 + TILE_LIST);
+    uint to_1 = metal::min(t_4.total, start_3 + TILE_LIST);
     s_6 = li_5;
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_5 = true;
@@ -1756,7 +1769,7 @@ uint tile_walk_fill(
         {
             uint _e12 = s_6;
             uint at_1 = subtree_at.inner[_e12];
-            past = t_3.total;
+            past = t_4.total;
             uint _e17 = s_6;
             if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
                 uint _e23 = s_6;
@@ -1772,7 +1785,7 @@ uint tile_walk_fill(
             bool _e34 = local_38;
             if (_e34) {
                 uint _e35 = s_6;
-                uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
+                uint _e37 = tile_subtree(_e35, t_4, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
             }
         }
     }
@@ -2146,15 +2159,15 @@ bool reached_before(
         {
             uint _e57 = previous_index(d_8.pixel, view, reuse);
             uint _e60 = q_7;
-            ReuseSlot h_4 = reuse_pixels[_e57].slots.inner[_e60];
-            if (h_4.w > 0.0) {
-                local_45 = h_4.light < (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+            ReuseSlot h_5 = reuse_pixels[_e57].slots.inner[_e60];
+            if (h_5.w > 0.0) {
+                local_45 = h_5.light < (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
             } else {
                 local_45 = false;
             }
             bool _e73 = local_45;
             if (_e73) {
-                metal::uint2 _e78 = sample_key(h_4.light, h_4.u, lights, _buffer_sizes);
+                metal::uint2 _e78 = sample_key(h_5.light, h_5.u, lights, _buffer_sizes);
                 local_46 = metal::all(_e78 == _e49);
             } else {
                 local_46 = false;
@@ -2178,7 +2191,7 @@ uint reuse_domains(
     metal::float3 x_16,
     metal::float3 n_15,
     float d_9,
-    uint h_2,
+    uint h_3,
     thread type_27& doms_1,
     constant ViewParams& view,
     constant ReuseParams& reuse,
@@ -2211,7 +2224,7 @@ uint reuse_domains(
     if (_e33.z <= 0.0) {
         return 0u;
     }
-    hr = h_2;
+    hr = h_3;
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -2247,23 +2260,23 @@ uint reuse_domains(
                 p_7 = _e55 + _e61;
             }
             metal::float2 _e63 = p_7;
-            metal::int2 t_9 = naga_f2i32(metal::rint(_e63));
-            if (!((t_9.x < 0))) {
-                local_47 = t_9.y < 0;
+            metal::int2 t_10 = naga_f2i32(metal::rint(_e63));
+            if (!((t_10.x < 0))) {
+                local_47 = t_10.y < 0;
             } else {
                 local_47 = true;
             }
             bool _e76 = local_47;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_48 = t_9.x >= static_cast<int>(_e83);
+                local_48 = t_10.x >= static_cast<int>(_e83);
             } else {
                 local_48 = true;
             }
             bool _e87 = local_48;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_49 = t_9.y >= static_cast<int>(_e94);
+                local_49 = t_10.y >= static_cast<int>(_e94);
             } else {
                 local_49 = true;
             }
@@ -2272,7 +2285,7 @@ uint reuse_domains(
                 continue;
             }
             uint _e103 = view.width;
-            uint pixel = (static_cast<uint>(t_9.y) * _e103) + static_cast<uint>(t_9.x);
+            uint pixel = (static_cast<uint>(t_10.y) * _e103) + static_cast<uint>(t_10.x);
             seen_1 = false;
             k_5 = 0u;
             uint2 loop_bound_13 = uint2(4294967295u);
@@ -2372,7 +2385,7 @@ ReuseSlot gris_combine(
     float own_1 = {};
     float all_1 = {};
     uint k_6 = {};
-    float t_4 = {};
+    float t_5 = {};
     bool local_57 = {};
     bool local_58 = {};
     j_6 = k0_;
@@ -2382,8 +2395,8 @@ ReuseSlot gris_combine(
         if (metal::all(loop_bound_14 == uint2(0u))) { break; }
         loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e176 = j_6;
-            j_6 = _e176 + 1u;
+            uint _e186 = j_6;
+            j_6 = _e186 + 1u;
         }
         loop_init_11 = false;
         uint _e22 = j_6;
@@ -2457,6 +2470,13 @@ ReuseSlot gris_combine(
             own_1 = cur_c * _e87;
             float _e105 = own_1;
             all_1 = _e105;
+            uint _e109 = s_11.light;
+            GpuLight _e111 = lights[_e109];
+            uint _e113 = s_11.u;
+            float _e114 = grid_coordinate(_e113);
+            uint _e116 = s_11.u;
+            float _e119 = grid_coordinate(_e116 << 16u);
+            metal::float3 _e120 = light_point(_e111, _e114, _e119);
             k_6 = k0_;
             uint2 loop_bound_15 = uint2(4294967295u);
             bool loop_init_12 = true;
@@ -2464,82 +2484,77 @@ ReuseSlot gris_combine(
                 if (metal::all(loop_bound_15 == uint2(0u))) { break; }
                 loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
                 if (!loop_init_12) {
-                    uint _e154 = k_6;
-                    k_6 = _e154 + 1u;
+                    uint _e164 = k_6;
+                    k_6 = _e164 + 1u;
                 }
                 loop_init_12 = false;
-                uint _e108 = k_6;
-                if (_e108 < k1_) {
+                uint _e122 = k_6;
+                if (_e122 < k1_) {
                 } else {
                     break;
                 }
                 {
-                    t_4 = 0.0;
-                    uint _e112 = j_6;
-                    if (!((_e112 > k0_))) {
+                    t_5 = 0.0;
+                    uint _e126 = j_6;
+                    if (!((_e126 > k0_))) {
                         local_57 = cur_reached;
                     } else {
                         local_57 = true;
                     }
-                    bool _e118 = local_57;
-                    if (_e118) {
-                        uint _e119 = k_6;
-                        float _e122 = doms_2.inner[_e119].c;
-                        uint _e125 = s_11.light;
-                        GpuLight _e127 = lights_prev[_e125];
-                        uint _e129 = s_11.u;
-                        uint _e130 = k_6;
-                        metal::float3 _e133 = doms_2.inner[_e130].x;
-                        uint _e134 = k_6;
-                        metal::float3 _e137 = doms_2.inner[_e134].n;
-                        uint _e138 = k_6;
-                        Material _e141 = doms_2.inner[_e138].m;
-                        float _e142 = reuse_target(q_8, _e127, _e129, _e133, _e137, _e141, geo_nodes, geo_tris, _buffer_sizes);
-                        t_4 = _e122 * _e142;
+                    bool _e132 = local_57;
+                    if (_e132) {
+                        uint _e133 = k_6;
+                        Domain d_10 = doms_2.inner[_e133];
+                        float _e140 = reuse_trust(_e120 - x_17, _e120 - d_10.x);
+                        uint _e144 = s_11.light;
+                        GpuLight _e146 = lights_prev[_e144];
+                        uint _e148 = s_11.u;
+                        float _e152 = reuse_target(q_8, _e146, _e148, d_10.x, d_10.n, d_10.m, geo_nodes, geo_tris, _buffer_sizes);
+                        t_5 = (d_10.c * _e140) * _e152;
                     }
-                    float _e144 = all_1;
-                    float _e145 = t_4;
-                    all_1 = _e144 + _e145;
-                    uint _e147 = k_6;
-                    uint _e150 = j_6;
-                    if ((_e147 + 1u) == _e150) {
-                        float _e152 = t_4;
-                        own_1 = _e152;
+                    float _e154 = all_1;
+                    float _e155 = t_5;
+                    all_1 = _e154 + _e155;
+                    uint _e157 = k_6;
+                    uint _e160 = j_6;
+                    if ((_e157 + 1u) == _e160) {
+                        float _e162 = t_5;
+                        own_1 = _e162;
                     }
                 }
             }
-            float _e156 = own_1;
-            float _e157 = all_1;
-            float _e158 = w_in;
-            float _e159 = gris_weight(_e156, _e157, _e87, _e158);
-            float _e160 = w_sum_3;
-            w_sum_3 = _e160 + _e159;
-            uint _e162 = hs_1;
-            uint _e163 = pcg_hash(_e162);
-            hs_1 = _e163;
-            if (_e159 > 0.0) {
-                float _e168 = w_sum_3;
-                uint _e169 = hs_1;
-                float _e170 = xi_from_bits(_e169);
-                bool _e171 = weighted_replace(_e159, _e168, _e170);
-                local_58 = _e171;
+            float _e166 = own_1;
+            float _e167 = all_1;
+            float _e168 = w_in;
+            float _e169 = gris_weight(_e166, _e167, _e87, _e168);
+            float _e170 = w_sum_3;
+            w_sum_3 = _e170 + _e169;
+            uint _e172 = hs_1;
+            uint _e173 = pcg_hash(_e172);
+            hs_1 = _e173;
+            if (_e169 > 0.0) {
+                float _e178 = w_sum_3;
+                uint _e179 = hs_1;
+                float _e180 = xi_from_bits(_e179);
+                bool _e181 = weighted_replace(_e169, _e178, _e180);
+                local_58 = _e181;
             } else {
                 local_58 = false;
             }
-            bool _e173 = local_58;
-            if (_e173) {
-                ReuseSlot _e174 = s_11;
-                out = _e174;
+            bool _e183 = local_58;
+            if (_e183) {
+                ReuseSlot _e184 = s_11;
+                out = _e184;
                 out_target = _e87;
             }
         }
     }
-    float _e179 = w_sum_3;
-    float _e180 = out_target;
-    float _e181 = gris_contribution_weight(_e179, _e180);
-    out.w = _e181;
-    ReuseSlot _e182 = out;
-    return _e182;
+    float _e189 = w_sum_3;
+    float _e190 = out_target;
+    float _e191 = gris_contribution_weight(_e189, _e190);
+    out.w = _e191;
+    ReuseSlot _e192 = out;
+    return _e192;
 }
 
 struct main_Input {

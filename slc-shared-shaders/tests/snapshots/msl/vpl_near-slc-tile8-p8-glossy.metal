@@ -153,6 +153,7 @@ constant uint BSH_TAIL = 2147483648u;
 constant uint BSH_TAIL_BINS = 1024u;
 constant uint BSH_TAIL_MAX = 64u;
 constant uint RESERVOIR_FULL = 4294967295u;
+constant float REUSE_TRUST_SCALE = 64.0;
 constant float GGX_ALPHA_MIN = 0.001;
 constant float RANGE_SCALE_MAX = 64.0;
 constant uint LIGHT_BVH_LEAF = 4294967295u;

@@ -172,10 +172,13 @@ pub struct DirectReuse {
 
 impl Default for DirectReuse {
     /// The pixel's own history only (no neighbours; a disk of 16 pixels
-    /// where some are asked for), at most 20 frames' confidence, no
-    /// visibility reuse.
+    /// where some are asked for), at most 20 frames' confidence, visibility
+    /// reuse (issue 47's noise target: with 3 picks, one frame of a still
+    /// view at a fifth of 8 weighted picks' error at fewer rays; plain
+    /// reuse, `visibility: false`, barely lowers it where shadows are the
+    /// noise; docs/results/reused-picks.md).
     fn default() -> Self {
-        DirectReuse { neighbours: 0, radius: 16.0, max_confidence: 20.0, visibility: false }
+        DirectReuse { neighbours: 0, radius: 16.0, max_confidence: 20.0, visibility: true }
     }
 }
 

@@ -131,7 +131,10 @@
 //!   0.23 of 8 weighted picks' relative RMSE there after 32 still frames,
 //!   at no more rays (7.2 per pixel against 7.4), and the shadow test's 8
 //!   picks 0.032 after 8 (unbiased where things move too, at one more
-//!   ray per pick where the camera or its light moved: see its docs).
+//!   ray per pick where the camera or its light moved: see its docs). It
+//!   is [`DirectReuse::default`]'s: 3 picks of it cast fewer rays than 8
+//!   of plain reuse in a still view at 0.58 of their error, and as many
+//!   while the camera pans.
 //! - `Uniform { k }`: `k` picks uniform among the `n` candidates (Algorithm
 //!   R), weighted `n/k` and `1/p`: the paper's reservoir.
 //! - `All`: every candidate, weighted `1/p` (exact given ξ): for small
