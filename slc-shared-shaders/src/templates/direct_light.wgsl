@@ -160,8 +160,9 @@ fn output_of(s: Shaded) -> vec3f {
 // (the reprojected one and DOMAINS − 1 around it) under the
 // generalized balance heuristic: a pick's share is its domain's confidence
 // (times slc-core's `reuse_trust` in the pick: less where that surface is
-// not this one, the more so the nearer the pick's light) times its target at that domain's surface (previous
-// lights), over the sum for every domain. Every target is the pick's whole unshadowed
+// not this one, the more so the nearer the pick's light) times its target
+// at that domain's surface (previous lights), over the sum for every
+// domain. Every target is the pick's whole unshadowed
 // contribution (no range, no roulette), so each domain can draw every
 // light: the combination is unbiased, and the culling's noise averages
 // over the reused frames.

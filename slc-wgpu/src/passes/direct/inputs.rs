@@ -140,7 +140,8 @@ pub struct DirectReuse {
     /// for the shading only. 0 by default: measured, they raised one
     /// frame's noise (docs/results/reused-picks.md: SLC's candidates are
     /// already every light in range, and a frame's ranges are every
-    /// pixel's, so a neighbour brings nothing the pixel lacks).
+    /// pixel's, so a neighbour brings nothing the pixel lacks). Visibility
+    /// reuse, the default, takes none: set `visibility: false` with them.
     pub neighbours: u32,
     /// Radius of the neighbours' disk, in pixels.
     pub radius: f32,
