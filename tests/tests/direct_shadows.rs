@@ -188,22 +188,43 @@ fn seeded_frame(
     seen_frame(gpu, (&s.position, &s.normal, &camera), pass, settings)
 }
 
-/// [`seeded_frame`] on the G-buffer `(position, normal)` seen by `camera`.
+/// The G-buffer `(position, normal)` and the camera that saw it.
+type Seen<'a> = (&'a wgpu::TextureView, &'a wgpu::TextureView, &'a Camera);
+
+/// The pass's inputs for the G-buffer `seen`, written to `view`, with the
+/// camera's view-projection (the reuse reprojects with it).
+fn seen_inputs<'a>(
+    (position, normal, camera): Seen<'a>,
+    view: &'a wgpu::TextureView,
+) -> DirectInputs<'a> {
+    DirectInputs {
+        view_projection: Some(camera.view_projection(size().0, size().1, 0.01, 100.0)),
+        ..DirectInputs::new(
+            GBuffer { surface: Surface::Position(position), normal, eye: camera.position },
+            view,
+        )
+    }
+}
+
+/// [`seen_inputs`] for the setup's G-buffer and the Cornell box's camera.
+fn setup_inputs<'a>(
+    s: &'a Setup,
+    camera: &'a Camera,
+    view: &'a wgpu::TextureView,
+) -> DirectInputs<'a> {
+    seen_inputs((&s.position, &s.normal, camera), view)
+}
+
+/// [`seeded_frame`] on the G-buffer `seen`.
 fn seen_frame(
     gpu: &GpuContext,
-    (position, normal, camera): (&wgpu::TextureView, &wgpu::TextureView, &Camera),
+    seen: Seen,
     pass: &mut DirectPass,
     settings: DirectSettings,
 ) -> Vec<[f32; 4]> {
     let out = engine::output(gpu, size());
     let view = out.create_view(&Default::default());
-    let inputs = DirectInputs {
-        view_projection: Some(camera.view_projection(size().0, size().1, 0.01, 100.0)),
-        ..DirectInputs::new(
-            GBuffer { surface: Surface::Position(position), normal, eye: camera.position },
-            &view,
-        )
-    };
+    let inputs = seen_inputs(seen, &view);
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     pass.record(&mut enc, &inputs, &settings).unwrap();
     engine::submit_and_read(gpu, enc, &out)
@@ -418,6 +439,53 @@ fn offsets(frame: u32, n: usize, size: f32) -> Vec<Vec3> {
     (0..n).map(|_| Vec3::new(rnd(), rnd(), rnd()) * size).collect()
 }
 
+/// The Cornell box seen from its camera moved by `offset(frame)`, for the
+/// frames `0..frames` (each G-buffer ray-cast anew).
+fn views_moved_by(
+    gpu: &GpuContext,
+    frames: u32,
+    offset: impl Fn(u32) -> Vec3,
+) -> Vec<(engine::UploadedGBuffer, Camera)> {
+    (0..frames)
+        .map(|frame| {
+            let mut scene = Scene::cornell_box();
+            let d = offset(frame);
+            scene.camera.position += d;
+            scene.camera.target += d;
+            (engine::upload_gbuffer(gpu, &scene, size()), scene.camera)
+        })
+        .collect()
+}
+
+/// The last frames of `runs` runs of `frames` frames each, `record(run,
+/// frame)` recording and reading back one frame (resetting the pass's
+/// history at frame 0).
+fn last_frames(
+    runs: u32,
+    frames: u32,
+    mut record: impl FnMut(u32, u32) -> Vec<[f32; 4]>,
+) -> Vec<Vec<[f32; 4]>> {
+    (0..runs).map(|run| (0..frames).map(|frame| record(run, frame)).last().unwrap()).collect()
+}
+
+/// Prints how the last frames' mean compares with the brute force `want`
+/// per 8×8 block, and asserts every block within its bound
+/// ([`assert_blocks`]) at 64×48, the size CI runs. At a larger
+/// `SLC_DIRECT_SHADOWS_SCALE`, with 16× the blocks or more, that bound is
+/// not calibrated (the frames' tails are heavy): the worst block is
+/// printed only.
+fn check_blocks(s: &Setup, last: &[Vec<[f32; 4]>], want: &[Option<Vec3>], what: &str) {
+    let blocks = blocks_against(s, last, want);
+    let ratio = blocks.iter().map(|b| b.1).sum::<f64>() / blocks.iter().map(|b| b.3).sum::<f64>();
+    let worst = blocks.iter().map(|b| (b.1 - b.3).abs() / b.2).fold(0.0, f64::max);
+    eprintln!(
+        "{what}: the runs' mean over the brute force {ratio:.4}, the worst block {worst:.1} standard errors off"
+    );
+    if size() == (64, 48) {
+        assert_blocks(&blocks, last.len(), what);
+    }
+}
+
 /// The setup's lights, each moved by up to 2 cm, a new offset per `frame`.
 fn moved(s: &Setup, frame: u32) -> Vec<Light> {
     let d = offsets(frame, s.lights.len(), 0.04);
@@ -481,55 +549,36 @@ fn reused_picks_match_the_brute_force() {
     ];
     let mut occ = occ;
     // The views of a moving camera (the last frame's is the setup's).
-    let cameras: Vec<(engine::UploadedGBuffer, Camera)> = (0..FRAMES - 1)
-        .map(|frame| {
-            let mut scene = Scene::cornell_box();
-            let d = offsets(frame + 100, 1, 0.04)[0];
-            scene.camera.position += d;
-            scene.camera.target += d;
-            (engine::upload_gbuffer(gpu, &scene, size()), scene.camera)
-        })
-        .collect();
+    let cameras = views_moved_by(gpu, FRAMES - 1, |frame| offsets(frame + 100, 1, 0.04)[0]);
     let (mut noise, mut per_channel) = (Vec::new(), Vec::new());
     for (what, reuse, motion) in configs {
         let mut pass = reusing_pass(gpu, &s, k8, reuse);
         pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
-        let last: Vec<Vec<[f32; 4]>> = (0..RUNS)
-            .map(|run| {
+        let last = last_frames(RUNS, FRAMES, |run, frame| {
+            if frame == 0 {
                 pass.reset_reuse();
-                let mut img = Vec::new();
-                for frame in 0..FRAMES {
-                    let moving = frame + 1 < FRAMES;
-                    if motion == Motion::Lights {
-                        let lights = if moving { moved(&s, frame) } else { s.lights.clone() };
-                        pass.update_lights(&lights).unwrap();
-                    }
-                    if motion == Motion::Cube {
-                        let d = if moving { offsets(frame, 1, 0.05)[0] } else { Vec3::ZERO };
-                        let t: Vec<Affine3A> =
-                            instances(SECOND_CUBE + d).iter().map(|i| i.transform).collect();
-                        occ.set_transforms(&t).unwrap();
-                        pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
-                    }
-                    let settings = DirectSettings { culling, seed: 100 + run, frame };
-                    img = match cameras.get(frame as usize) {
-                        Some((g, camera)) if motion == Motion::Camera => {
-                            seen_frame(gpu, (&g.position, &g.normal, camera), &mut pass, settings)
-                        }
-                        _ => seeded_frame(gpu, &s, &mut pass, settings),
-                    };
+            }
+            let moving = frame + 1 < FRAMES;
+            if motion == Motion::Lights {
+                let lights = if moving { moved(&s, frame) } else { s.lights.clone() };
+                pass.update_lights(&lights).unwrap();
+            }
+            if motion == Motion::Cube {
+                let d = if moving { offsets(frame, 1, 0.05)[0] } else { Vec3::ZERO };
+                let t: Vec<Affine3A> =
+                    instances(SECOND_CUBE + d).iter().map(|i| i.transform).collect();
+                occ.set_transforms(&t).unwrap();
+                pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
+            }
+            let settings = DirectSettings { culling, seed: 100 + run, frame };
+            match cameras.get(frame as usize) {
+                Some((g, camera)) if motion == Motion::Camera => {
+                    seen_frame(gpu, (&g.position, &g.normal, camera), &mut pass, settings)
                 }
-                img
-            })
-            .collect();
-        let blocks = blocks_against(&s, &last, &want);
-        let ratio =
-            blocks.iter().map(|b| b.1).sum::<f64>() / blocks.iter().map(|b| b.3).sum::<f64>();
-        let worst = blocks.iter().map(|b| (b.1 - b.3).abs() / b.2).fold(0.0, f64::max);
-        eprintln!(
-            "{what}: the runs' mean over the brute force {ratio:.4}, the worst block {worst:.1} standard errors off"
-        );
-        assert_blocks(&blocks, last.len(), what);
+                _ => seeded_frame(gpu, &s, &mut pass, settings),
+            }
+        });
+        check_blocks(&s, &last, &want, what);
         let (sum, channels) = relative_rmse(&s, &last, &want);
         eprintln!("{what}: one frame's relative RMSE {sum:.4}, per channel {channels:.4}");
         noise.push(sum);
@@ -564,15 +613,8 @@ fn counted(
 ) -> DirectCounts {
     let out = engine::output(gpu, size());
     let view = out.create_view(&Default::default());
-    let (w, h) = size();
-    let inputs = DirectInputs {
-        view_projection: Some(Scene::cornell_box().camera.view_projection(w, h, 0.01, 100.0)),
-        ..DirectInputs::new(
-            GBuffer { surface: Surface::Position(&s.position), normal: &s.normal, eye: s.eye },
-            &view,
-        )
-    };
-    pass.count_work(&inputs, &settings).unwrap()
+    let camera = Scene::cornell_box().camera;
+    pass.count_work(&setup_inputs(s, &camera, &view), &settings).unwrap()
 }
 
 /// The default reuse ([`DirectReuse::default`], visibility reuse) of 3
@@ -608,15 +650,9 @@ fn default_reuse_still_and_panning() {
     let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
     const RUNS: u32 = 32;
     const FRAMES: u32 = 8;
-    let pan: Vec<(engine::UploadedGBuffer, Camera)> = (0..FRAMES - 1)
-        .map(|frame| {
-            let mut scene = Scene::cornell_box();
-            let d = Vec3::new(1.0, 0.5, 0.3).normalize() * 0.015 * (FRAMES - 1 - frame) as f32;
-            scene.camera.position += d;
-            scene.camera.target += d;
-            (engine::upload_gbuffer(gpu, &scene, size()), scene.camera)
-        })
-        .collect();
+    let pan = views_moved_by(gpu, FRAMES - 1, |frame| {
+        Vec3::new(1.0, 0.5, 0.3).normalize() * 0.015 * (FRAMES - 1 - frame) as f32
+    });
     let plain = DirectReuse { visibility: false, ..DirectReuse::default() };
     let configs = [
         ("8 weighted picks", DirectSelection::Weighted { k: 8 }, None),
@@ -638,39 +674,24 @@ fn default_reuse_still_and_panning() {
             let mut pass = reusing_pass(gpu, &s, selection, reuse);
             pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
             let mut rays = 0.0;
-            let last: Vec<Vec<[f32; 4]>> = (0..RUNS)
-                .map(|run| {
+            let last = last_frames(RUNS, FRAMES, |run, frame| {
+                if frame == 0 {
                     pass.reset_reuse();
-                    let mut img = Vec::new();
-                    for frame in 0..FRAMES {
-                        let settings = DirectSettings { culling, seed: 100 + run, frame };
-                        if run == 0 && frame + 1 == FRAMES {
-                            let c = counted(gpu, &s, &mut pass, settings);
-                            rays = c.per_pixel(c.rays);
-                        }
-                        img = match pan.get(frame as usize) {
-                            Some((g, camera)) if panning => seen_frame(
-                                gpu,
-                                (&g.position, &g.normal, camera),
-                                &mut pass,
-                                settings,
-                            ),
-                            _ => seeded_frame(gpu, &s, &mut pass, settings),
-                        };
+                }
+                let settings = DirectSettings { culling, seed: 100 + run, frame };
+                if run == 0 && frame + 1 == FRAMES {
+                    let c = counted(gpu, &s, &mut pass, settings);
+                    rays = c.per_pixel(c.rays);
+                }
+                match pan.get(frame as usize) {
+                    Some((g, camera)) if panning => {
+                        seen_frame(gpu, (&g.position, &g.normal, camera), &mut pass, settings)
                     }
-                    img
-                })
-                .collect();
+                    _ => seeded_frame(gpu, &s, &mut pass, settings),
+                }
+            });
             let what = format!("{what}, {}", if panning { "panning" } else { "still" });
-            let blocks = blocks_against(&s, &last, &want);
-            if size() == (64, 48) {
-                assert_blocks(&blocks, last.len(), &what);
-            } else {
-                // 16× the blocks or more: the bound is not calibrated for
-                // them (the frames' tails are heavy); CI checks at 64×48.
-                let worst = blocks.iter().map(|b| (b.1 - b.3).abs() / b.2).fold(0.0, f64::max);
-                eprintln!("{what}: the worst block {worst:.1} standard errors off");
-            }
+            check_blocks(&s, &last, &want, &what);
             let (noise, _) = relative_rmse(&s, &last, &want);
             eprintln!("{what}: one frame's relative RMSE {noise:.4} at {rays:.2} rays per pixel");
             *cell = (noise, rays);
@@ -757,18 +778,8 @@ fn work_counters() {
     let occ = Occluders::new(&s.meshes, &inst).unwrap();
     let out = engine::output(gpu, size());
     let view = out.create_view(&Default::default());
-    let inputs = DirectInputs {
-        view_projection: Some(Scene::cornell_box().camera.view_projection(
-            size().0,
-            size().1,
-            0.01,
-            100.0,
-        )),
-        ..DirectInputs::new(
-            GBuffer { surface: Surface::Position(&s.position), normal: &s.normal, eye: s.eye },
-            &view,
-        )
-    };
+    let camera = Scene::cornell_box().camera;
+    let inputs = setup_inputs(&s, &camera, &view);
     let shaded = s.points.iter().flatten().count() as u64;
 
     let mut all = pass(gpu, &s, DirectSelection::All);
@@ -1001,10 +1012,8 @@ fn ray_query_picks_equal_the_software_walk() {
     // the same counts as a pass casting its rays in software.
     let out = engine::output(gpu, size());
     let view = out.create_view(&Default::default());
-    let inputs = DirectInputs::new(
-        GBuffer { surface: Surface::Position(&s.position), normal: &s.normal, eye: s.eye },
-        &view,
-    );
+    let camera = Scene::cornell_box().camera;
+    let inputs = setup_inputs(&s, &camera, &view);
     let settings = DirectSettings { culling, seed: 3, frame: 5 };
     let counts = |rays: ShadowRays| {
         let mut pass = pass(gpu, &s, DirectSelection::Weighted { k: 8 });
